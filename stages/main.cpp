@@ -1,0 +1,9 @@
+// The entry point of the `gas` program; everything happens in console.cpp.
+#include <string>
+#include <vector>
+
+#include "console.hpp"
+
+int main(int argc, char** argv) {
+  return gas::run_console(std::vector<std::string>(argv + 1, argv + argc));
+}

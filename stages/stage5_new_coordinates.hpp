@@ -1,0 +1,61 @@
+// Stage 5 — new coordinates.
+//
+// What this stage does: shifts time by T1 — a whole display step T0, or only
+// up to the first collision TC — remembers the old centres (RS) so that stage
+// 6 can erase them, computes the new centres, and, when the step ends on a
+// collision, gives the colliding balls their new velocities.
+// Article: "Gas on the display", stage 5, "new coordinates" (T1 = T0 if
+// TC > T + T0, else T1 = TC - T; new velocities of N1 (K != 3) or of N1 and N2
+// (K = 3) by the formula for VI).
+// Lesson: lessons/5-new-coordinates.md
+//
+// Assumptions: the physics moves from collision to collision (stage 1's Ball
+// keeps the moment it was written), so T1 only decides where the picture is
+// taken: any T0 gives the same collisions, bit for bit.
+#pragma once
+
+#include "stage1_data.hpp"
+#include "stage3_screen.hpp"
+#include "stage4_first_collision.hpp"
+
+namespace gas {
+
+// T1, the time to the next picture: the display step T0 if the first
+// collision comes later than T + T0, else just up to the collision. (The
+// article says what to do for TC > T + T0 and for TC < T + T0; at
+// TC = T + T0 exactly the step ends on the collision.)
+// [anchor: step-length]
+inline bool collision_within_step(double now, double display_step,
+                                  double collision_time) {
+  return !(collision_time > now + display_step);
+}
+
+inline double step_length(double now, double display_step, double collision_time) {
+  return collision_within_step(now, display_step, collision_time) ? collision_time - now
+                                                                  : display_step;
+}
+// [/anchor: step-length]
+
+// The centres a picture shows: the old ones (RS) and the new ones.
+struct Picture {
+  std::vector<Point> old_centres;  // RS(2, N): the centres drawn last time
+  std::vector<Point> centres;      // the centres at T, to draw now
+};
+
+// Shifts the clock to `new_time` (T + T1): the centres drawn so far become the
+// old ones, and the centres at the new time are computed.
+void shift_time(Gas& gas, Picture& picture, double new_time);
+
+// The new velocities of two balls in contact, by the article's VI formula.
+// Requires p != q. Only the components along the line of centres change.
+void collide_balls(Ball& p, Ball& q);
+
+// Carries out a collision found by stage 4 at its time TC: moves the ball(s)
+// involved to TC and gives them their new velocities. A ball hitting a wall is
+// put exactly on its limit, so round-off never lets a ball through a wall.
+void apply_collision(Gas& gas, const CentreLimits& limits, const Collision& collision);
+
+// The B key: every velocity reversed, at the present time.
+void reverse_velocities(Gas& gas);
+
+}  // namespace gas

@@ -1,0 +1,97 @@
+// Stage 6 — output to the screen.
+//
+// What this stage does: draws what we want to see on the text screen of stage
+// 3, in one of the article's three ways — the moving balls (erase each old
+// image, draw the new one), their trajectories (a segment from each old
+// centre to the new one, nothing erased), or a character screen of figures
+// (no drawing at all) — and sends the screen to the terminal.
+// Article: "Gas on the display", stage 6, "output to the screen".
+// Lesson: lessons/6-output.md
+//
+// Assumptions: a terminal that understands ANSI escapes when it is a terminal;
+// plain text frames otherwise.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "stage1_data.hpp"
+#include "stage3_screen.hpp"
+#include "stage5_new_coordinates.hpp"
+
+namespace gas {
+
+// The three screens of the article.
+enum class ScreenMode { balls, trails, stats };
+
+const char* mode_name(ScreenMode mode);
+
+// The base colour's tone: the B key changes it, so that the reversed run
+// looks different from the forward one.
+struct Tone {
+  char ball_glyph;   // a ball's image
+  char trail_glyph;  // a trajectory segment
+  int ansi_colour;   // the ANSI foreground colour, when colour is on
+};
+inline constexpr Tone tones[2] = {{'O', '.', 36}, {'@', '+', 33}};
+
+// The cells of a ball's image centred at `centre`: every cell whose middle is
+// within a of the centre, and always the centre's own cell (a ball smaller
+// than a character is one glyph).
+std::vector<Cell> ball_image(const TextScreen& screen, Point centre, double radius);
+
+// Balls screen: erase every old image (RS), then draw every new one.
+void draw_balls(TextScreen& screen, const Picture& picture, double radius,
+                const Tone& tone);
+
+// Trajectories screen: a segment from each old centre to its new centre.
+void draw_trails(TextScreen& screen, const Picture& picture, const Tone& tone);
+
+// The figures of the statistics screen (and of --csv).
+struct Figures {
+  double time = 0;                // T
+  double display_step = 0;        // T0
+  long long wall_collisions = 0;  // K = 1 and K = 2 so far
+  long long ball_collisions = 0;  // K = 3 so far
+  double mean_speed = 0;          // mean of |v|
+  double energy = 0;              // kinetic energy, unit mass
+  double energy_drift = 0;        // (E - E at start) / E at start; 0 if E at start is 0
+  Point momentum;                 // total momentum, unit mass
+};
+
+Figures measure(const Gas& gas, double starting_energy, long long wall_collisions,
+                long long ball_collisions);
+
+// Statistics screen: the figures at fixed places inside the border.
+void draw_figures(TextScreen& screen, const Figures& figures);
+
+// The one-line heading above every frame.
+std::string status_line(const Figures& figures, ScreenMode mode, bool stopped);
+
+// The CSV header and one row of figures.
+std::string csv_header();
+std::string csv_row(const Figures& figures);
+
+// Sends frames to standard output. On a terminal: draws in place with ANSI
+// escapes, sending only the characters that changed (with colour when
+// `colour`); elsewhere: every frame in full, headed by its status line.
+class Display {
+ public:
+  Display(std::FILE* out, bool terminal, bool colour)
+      : out_(out), terminal_(terminal), colour_(colour) {}
+  void show(const TextScreen& screen, const std::string& status, const Tone& tone);
+  // Forget what the terminal shows, so that the next frame is drawn whole.
+  void invalidate() { shown_.clear(); }
+  void bell();
+  // On a terminal: moves the cursor below the last frame and shows it again.
+  void finish();
+
+ private:
+  std::FILE* out_;
+  bool terminal_;
+  bool colour_;
+  std::vector<std::string> shown_;  // what the terminal shows now, status line first
+};
+
+}  // namespace gas

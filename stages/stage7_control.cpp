@@ -1,0 +1,170 @@
+// Stage 7 — model control. See stage7_control.hpp.
+#include "stage7_control.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+
+namespace gas {
+
+Control start_control(Gas gas) {
+  Control control;
+  control.gas = std::move(gas);
+  control.limits = centre_limits(control.gas);
+  control.starting_energy = kinetic_energy(control.gas);
+  control.picture.centres = centres_at(control.gas, control.gas.time);
+  control.picture.old_centres = control.picture.centres;
+  return control;
+}
+
+long long most_collisions_at_one_instant(std::size_t ball_count) {
+  const auto n = static_cast<long long>(ball_count);
+  return 1000 + 100 * n * n;
+}
+
+namespace {
+
+const char* kind_name(CollisionKind kind) {
+  switch (kind) {
+    case CollisionKind::none:
+      return "none";
+    case CollisionKind::horizontal_wall:
+      return "horizontal wall";
+    case CollisionKind::vertical_wall:
+      return "vertical wall";
+    case CollisionKind::balls:
+      return "two balls";
+  }
+  return "?";
+}
+
+void trace_first_collision(std::FILE* trace, const Collision& c) {
+  if (trace == nullptr) return;
+  fmt::print(trace, "stage 4  first collision: TC={} K={} ({}) N1={} N2={}\n", c.time,
+             static_cast<int>(c.kind), kind_name(c.kind), c.first, c.second);
+}
+
+// Stage 4, as the loop calls it.
+void find_next(Control& control, std::FILE* trace) {
+  control.next = find_first_collision(control.gas, control.limits);
+  control.must_find_collision = false;
+  trace_first_collision(trace, control.next);
+}
+
+// Stage 5's velocity part, as the loop calls it.
+void carry_out(Control& control, Step& step, std::FILE* trace) {
+  const Collision& c = control.next;
+  apply_collision(control.gas, control.limits, c);
+  if (c.kind == CollisionKind::balls) {
+    ++control.ball_collisions;
+  } else {
+    ++control.wall_collisions;
+  }
+  step.collisions.push_back(c);
+  if (trace != nullptr) {
+    fmt::print(trace, "stage 5  new velocities: K={} N1={} N2={}\n",
+               static_cast<int>(c.kind), c.first, c.second);
+  }
+}
+
+}  // namespace
+
+// [anchor: take-step]
+Step take_step(Control& control, double time_limit, std::FILE* trace) {
+  Gas& gas = control.gas;
+  Step step;
+
+  // Stage 4, if the last step ended on a collision (or a key changed the
+  // velocities).
+  if (control.must_find_collision) find_next(control, trace);
+
+  // Stage 5: T1 = T0 if no collision is due within the step, else TC - T.
+  // The step ends at exactly TC (not at T + (TC - T), which may round to
+  // either side of it), and never past the time limit.
+  const double now = gas.time;
+  bool collision_due = collision_within_step(now, gas.display_step, control.next.time);
+  double new_time = collision_due ? control.next.time : now + gas.display_step;
+  const bool limited = new_time > time_limit;
+  if (limited) {
+    new_time = time_limit;
+    collision_due = control.next.time <= time_limit;
+  }
+  step.length = new_time - now;
+  shift_time(gas, control.picture, new_time);
+  if (trace != nullptr) {
+    fmt::print(trace, "stage 5  new coordinates: T1 = {} = {}, T = {}\n",
+               collision_due ? "TC - T"
+               : limited     ? "the time left"
+                             : "T0",
+               step.length, gas.time);
+  }
+
+  // Stage 5 for the collision, then stage 7: while TC <= T, back to stage 4.
+  if (collision_due) {
+    const long long most = most_collisions_at_one_instant(gas.balls.size());
+    long long at_this_instant = 0;
+    while (control.next.kind != CollisionKind::none && control.next.time <= gas.time) {
+      if (++at_this_instant > most) {
+        throw std::runtime_error(
+            fmt::format("at T = {:.17g} more than {} collisions happened at one instant; "
+                        "round-off has "
+                        "trapped the balls and time cannot move on",
+                        gas.time, most));
+      }
+      carry_out(control, step, trace);
+      if (trace != nullptr)
+        fmt::print(trace, "stage 7  model control: TC <= T, back to stage 4\n");
+      find_next(control, trace);
+    }
+  }
+  return step;
+}
+// [/anchor: take-step]
+
+void trace_decision(const Control& control, std::FILE* trace) {
+  fmt::print(trace, "stage 7  model control: TC = {} > T = {}, back to stage 5\n",
+             control.next.time, control.gas.time);
+}
+
+// [anchor: press-key]
+KeyEffect press_key(Control& control, char key) {
+  switch (std::toupper(static_cast<unsigned char>(key))) {
+    case 'S':
+      control.stopped = true;
+      break;
+    case 'R':
+      control.stopped = false;
+      break;
+    case 'B':  // reverse all velocities, change the tone, go on computing
+      reverse_velocities(control.gas);
+      control.tone = 1 - control.tone;
+      control.must_find_collision = true;
+      break;
+    // T0 only decides where pictures are taken; TC does not depend on it, so
+    // unlike the article's program we need not go back to stage 4.
+    // (T0 stays a positive, finite number that moves T, however often a key
+    // is pressed.)
+    case '>':
+      if (std::isfinite(2 * control.gas.display_step)) control.gas.display_step *= 2;
+      break;
+    case '<':  // (and T + T0 must still move past T)
+      if (std::isnormal(control.gas.display_step / 2) &&
+          control.gas.time + control.gas.display_step / 2 > control.gas.time) {
+        control.gas.display_step /= 2;
+      }
+      break;
+    case '0':
+      return KeyEffect::redraw;
+    case 'E':
+      control.ended = true;
+      return KeyEffect::end;
+    default:
+      break;
+  }
+  return KeyEffect::none;
+}
+// [/anchor: press-key]
+
+}  // namespace gas

@@ -1,0 +1,81 @@
+// The terminal. See terminal.hpp.
+#include "terminal.hpp"
+
+#include <poll.h>
+#include <sys/ioctl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <csignal>
+
+namespace gas {
+namespace {
+
+volatile std::sig_atomic_t interrupt_arrived = 0;
+termios saved_settings;
+volatile std::sig_atomic_t settings_saved = 0;
+
+// What the escape sequences and termios changed, undone with calls that are
+// safe inside a signal handler.
+void restore_terminal() {
+  if (settings_saved) tcsetattr(STDIN_FILENO, TCSANOW, &saved_settings);
+}
+
+extern "C" void on_interrupt(int) {
+  interrupt_arrived = 1;
+}
+
+}  // namespace
+
+bool is_terminal(int file_descriptor) {
+  return isatty(file_descriptor) == 1;
+}
+
+std::optional<TerminalSize> terminal_size() {
+  winsize size{};
+  if (!is_terminal(STDOUT_FILENO) || ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) != 0 ||
+      size.ws_col == 0 || size.ws_row == 0) {
+    return std::nullopt;
+  }
+  return TerminalSize{size.ws_col, size.ws_row};
+}
+
+void install_interrupt_flag() {
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = 0;  // no SA_RESTART: a waiting poll() returns at once
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+bool interrupted() {
+  return interrupt_arrived != 0;
+}
+
+RawKeys::RawKeys() {
+  if (!is_terminal(STDIN_FILENO) || tcgetattr(STDIN_FILENO, &saved_settings) != 0) return;
+  settings_saved = 1;
+  termios raw = saved_settings;
+  raw.c_lflag &= ~static_cast<tcflag_t>(ICANON | ECHO);  // keys at once, not echoed
+  raw.c_cc[VMIN] = 0;
+  raw.c_cc[VTIME] = 0;
+  active_ = tcsetattr(STDIN_FILENO, TCSANOW, &raw) == 0;
+}
+
+RawKeys::~RawKeys() {
+  if (active_) restore_terminal();
+  settings_saved = 0;
+}
+
+std::string RawKeys::poll(int wait_ms) {
+  std::string keys;
+  pollfd input{STDIN_FILENO, POLLIN, 0};
+  if (::poll(&input, 1, wait_ms) <= 0 || (input.revents & POLLIN) == 0) return keys;
+  char buffer[64];
+  const ssize_t count = read(STDIN_FILENO, buffer, sizeof buffer);
+  if (count > 0) keys.assign(buffer, static_cast<std::size_t>(count));
+  return keys;
+}
+
+}  // namespace gas

@@ -1,0 +1,44 @@
+// The terminal: keys without Enter, its size, and putting it back as it was.
+//
+// Not one of the article's stages: the article's BASIC had INKEY$ for a key
+// and a screen of fixed size; this file gives stage 7's console loop the same
+// two things on a POSIX terminal.
+// Lesson: lessons/7-model-control.md (the keys).
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace gas {
+
+bool is_terminal(int file_descriptor);
+
+// The terminal's size in characters, if standard output is a terminal.
+struct TerminalSize {
+  int columns = 80;
+  int rows = 24;
+};
+std::optional<TerminalSize> terminal_size();
+
+// While an object of this class lives, standard input delivers every key at
+// once, without echo and without waiting for Enter. The terminal's settings
+// are put back when it dies, and also if the program is interrupted (Ctrl-C)
+// or terminated, so that a shell is never left without echo.
+class RawKeys {
+ public:
+  RawKeys();
+  ~RawKeys();
+  RawKeys(const RawKeys&) = delete;
+  RawKeys& operator=(const RawKeys&) = delete;
+  // The keys pressed so far, waiting at most `wait_ms` milliseconds for one.
+  std::string poll(int wait_ms);
+
+ private:
+  bool active_ = false;
+};
+
+// True once Ctrl-C (SIGINT) or SIGTERM has arrived, after install_interrupt_flag.
+bool interrupted();
+void install_interrupt_flag();
+
+}  // namespace gas

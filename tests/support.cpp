@@ -1,0 +1,99 @@
+// Helpers shared by the tests. See support.hpp.
+#include "support.hpp"
+
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace gas::testing {
+
+gas::Gas table_with(std::vector<gas::Ball> balls, double time) {
+  gas::Gas gas;
+  gas.radius = 1;
+  gas.width = 40;
+  gas.height = 30;
+  gas.balls = std::move(balls);
+  gas.time = time;
+  return gas;
+}
+
+std::string source_path(const std::string& relative) {
+  return std::string(GAS_SOURCE_DIR) + "/" + relative;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  REQUIRE_MESSAGE(file.good(), "cannot read " << path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+namespace {
+
+// A single-quoted shell word.
+std::string quoted(const std::string& word) {
+  std::string out(1, '\'');
+  for (const char c : word) {
+    if (c == '\'') {
+      out.append("'\\''");
+    } else {
+      out.push_back(c);
+    }
+  }
+  out.push_back('\'');
+  return out;
+}
+
+}  // namespace
+
+ProgramRun run_program(const std::vector<std::string>& arguments,
+                       const std::string& input) {
+  const auto scratch = std::filesystem::temp_directory_path() /
+                       fmt::format("gas-test-{}-{}", getpid(), std::rand());
+  std::filesystem::create_directories(scratch);
+  const std::string in = (scratch / "in").string();
+  const std::string out = (scratch / "out").string();
+  const std::string err = (scratch / "err").string();
+  std::ofstream(in, std::ios::binary) << input;
+  std::string command =
+      fmt::format("cd {} && {}", quoted(GAS_SOURCE_DIR), quoted(GAS_PROGRAM));
+  for (const std::string& argument : arguments)
+    command += fmt::format(" {}", quoted(argument));
+  command += fmt::format(" <{} >{} 2>{}", quoted(in), quoted(out), quoted(err));
+  const int raw = std::system(command.c_str());
+  ProgramRun run;
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  run.out = read_file(out);
+  run.err = read_file(err);
+  std::filesystem::remove_all(scratch);
+  return run;
+}
+
+void check_golden(const std::string& relative, const std::string& actual) {
+  const std::string path = source_path("data/" + relative);
+  const char* update = std::getenv("GAS_UPDATE_GOLDEN");
+  if (update != nullptr && std::string(update) == "1") {
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    std::ofstream(path, std::ios::binary) << actual;
+    MESSAGE("rewrote " << path);
+    return;
+  }
+  REQUIRE_MESSAGE(
+      std::filesystem::exists(path),
+      "no golden file " << path << " (run with GAS_UPDATE_GOLDEN=1 to write it)");
+  const std::string expected = read_file(path);
+  CHECK_MESSAGE(actual == expected,
+                "output differs from "
+                    << path << " (GAS_UPDATE_GOLDEN=1 rewrites it)\n--- actual ---\n"
+                    << actual);
+}
+
+}  // namespace gas::testing

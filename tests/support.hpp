@@ -1,0 +1,39 @@
+// Helpers shared by the tests: files of the source tree, running the `gas`
+// program, and golden files (expected outputs kept in data/).
+#pragma once
+
+#include <string>
+
+#include <vector>
+#include "stage1_data.hpp"
+
+namespace gas::testing {
+
+// A hand-made gas for the stage tests: a 40 x 30 table with balls of
+// radius 1, so that centres stay in [1, 39] x [1, 29].
+gas::Gas table_with(std::vector<gas::Ball> balls, double time = 0);
+
+// A path inside the source tree, e.g. source_path("data/default.scene").
+std::string source_path(const std::string& relative);
+
+// The whole content of a file; fails the test if it cannot be read.
+std::string read_file(const std::string& path);
+
+// The result of running the `gas` program.
+struct ProgramRun {
+  int status = -1;  // exit status
+  std::string out;  // standard output
+  std::string err;  // standard error
+};
+
+// Runs build/gas with these arguments (each one passed as it is), with
+// standard input from /dev/null (or `input`), from the source directory.
+ProgramRun run_program(const std::vector<std::string>& arguments,
+                       const std::string& input = "");
+
+// Compares `actual` with the golden file data/<relative>. With the
+// environment variable GAS_UPDATE_GOLDEN=1 the golden file is rewritten
+// instead (then read the diff before committing it).
+void check_golden(const std::string& relative, const std::string& actual);
+
+}  // namespace gas::testing

@@ -1,0 +1,422 @@
+// The console program `gas`: its command line and what it prints.
+//
+// - parse_options on good command lines (every option, both spellings
+//   "--opt value" and "--opt=value") and on bad ones (unknown option,
+//   missing value, negative or non-numeric numbers, unknown mode, --frames
+//   with --until, two scenes, a value given to a flag).
+// - The program itself: bad usage gives exit status 2, a message on stderr
+//   and nothing on stdout; --help gives exit 0 and the help text; five
+//   frames are five frames, each a status line and a bordered screen.
+// - Scripted runs of every teaching scene against golden outputs in
+//   data/golden/runs/ (balls, trails, stats, the keys ..B.., --trace).
+// - The files: --events and --csv (headers, one row per collision and per
+//   frame), --dump (a scene read_scene_file accepts, equal to the same run
+//   done in this process).
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "console.hpp"
+#include "stage2_input.hpp"
+#include "stage7_control.hpp"
+#include "support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using gas::testing::check_golden;
+using gas::testing::read_file;
+using gas::testing::run_program;
+using gas::testing::source_path;
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::stringstream stream(text);
+  for (std::string line; std::getline(stream, line);) lines.push_back(line);
+  return lines;
+}
+
+// The message parse_options gives for `arguments`, or "" if it accepts them.
+std::string usage_error(const std::vector<std::string>& arguments) {
+  try {
+    gas::parse_options(arguments);
+  } catch (const gas::UsageError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// A fresh scratch directory for files the program writes; removed at the end.
+struct Scratch {
+  fs::path path = fs::temp_directory_path() /
+                  fmt::format("gas-console-test-{}-{}", getpid(), std::rand());
+  Scratch() { fs::create_directories(path); }
+  ~Scratch() { fs::remove_all(path); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+// The frames of a plain (not a terminal) run: each a status line starting
+// "T=", then a screen from a '+' border line to the next one.
+struct Frame {
+  std::string status;
+  std::vector<std::string> screen;
+};
+
+std::vector<Frame> frames_of(const std::string& out) {
+  std::vector<Frame> frames;
+  const std::vector<std::string> lines = lines_of(out);
+  for (std::size_t i = 0; i < lines.size();) {
+    if (lines[i].rfind("T=", 0) != 0) {  // e.g. --trace lines
+      ++i;
+      continue;
+    }
+    Frame frame{lines[i++], {}};
+    auto starts = [&](char c) {
+      return i < lines.size() && !lines[i].empty() && lines[i][0] == c;
+    };
+    if (starts('+')) {
+      frame.screen.push_back(lines[i++]);
+      while (starts('|')) frame.screen.push_back(lines[i++]);
+      if (starts('+')) frame.screen.push_back(lines[i++]);
+    }
+    frames.push_back(frame);
+  }
+  return frames;
+}
+
+// Is the screen a box of '+', '-', '|' around its inside, every line as wide?
+bool bordered(const std::vector<std::string>& screen) {
+  if (screen.size() < 3) return false;
+  const std::size_t width = screen.front().size();
+  const std::regex edge("^\\+-+\\+$"), middle("^\\|.*\\|$");
+  for (std::size_t i = 0; i < screen.size(); ++i) {
+    if (screen[i].size() != width) return false;
+    const bool end = i == 0 || i + 1 == screen.size();
+    if (!std::regex_match(screen[i], end ? edge : middle)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_SUITE("console") {
+  TEST_CASE("parse_options: no arguments means the default scene on the balls screen") {
+    const gas::Options o = gas::parse_options({});
+    CHECK_FALSE(o.scene_path);
+    CHECK_FALSE(o.frames);
+    CHECK_FALSE(o.until);
+    CHECK_FALSE(o.keys);
+    CHECK(o.mode == gas::ScreenMode::balls);
+    CHECK_FALSE(o.step);
+    CHECK_FALSE(o.trace);
+    CHECK_FALSE(o.bell);
+    CHECK_FALSE(o.help);
+  }
+
+  TEST_CASE("parse_options: every option and the --option=value spelling") {
+    const gas::Options o = gas::parse_options(
+        {"data/crowd.scene", "--frames", "12",       "--keys",  "..B<",
+         "--mode",           "trails",   "--events", "e.csv",   "--dump",
+         "d.scene",          "--csv",    "c.csv",    "--cols",  "100",
+         "--rows",           "30",       "--step",   "--trace", "--bell"});
+    CHECK(o.scene_path == "data/crowd.scene");
+    CHECK(o.frames == 12);
+    CHECK(o.keys == "..B<");
+    CHECK(o.mode == gas::ScreenMode::trails);
+    CHECK(o.events_path == "e.csv");
+    CHECK(o.dump_path == "d.scene");
+    CHECK(o.csv_path == "c.csv");
+    CHECK(o.columns == 100);
+    CHECK(o.rows == 30);
+    CHECK(o.step);
+    CHECK(o.trace);
+    CHECK(o.bell);
+
+    const gas::Options p =
+        gas::parse_options({"--until=2.5", "--mode=stats", "--keys=", "--cols=8"});
+    CHECK(p.until == 2.5);
+    CHECK(p.mode == gas::ScreenMode::stats);
+    CHECK(p.keys == "");
+    CHECK(p.columns == 8);
+    CHECK(gas::parse_options({"--mode", "balls"}).mode == gas::ScreenMode::balls);
+    CHECK(gas::parse_options({"--frames", "0"}).frames == 0);
+    CHECK(gas::parse_options({"--until", "0"}).until == 0);
+    CHECK(gas::parse_options({"--help"}).help);
+    CHECK(gas::parse_options({"-h"}).help);
+  }
+
+  TEST_CASE(
+      "parse_options: bad command lines are refused with a message that names the "
+      "problem") {
+    CHECK(usage_error({"--frobnicate"}) == "unknown option '--frobnicate'");
+    CHECK(usage_error({"-x"}) == "unknown option '-x'");
+    CHECK(usage_error({"--frames"}) == "--frames needs a value");
+    CHECK(usage_error({"data/default.scene", "--events"}) == "--events needs a value");
+    CHECK(usage_error({"--frames", "-1"}) == "--frames must not be negative, not -1");
+    CHECK(usage_error({"--until", "-0.5"}) == "--until must not be negative, not -0.5");
+    CHECK(usage_error({"--mode", "fancy"}) ==
+          "--mode takes balls, trails or stats, not 'fancy'");
+    CHECK(usage_error({"--mode", "Balls"}) ==
+          "--mode takes balls, trails or stats, not 'Balls'");
+    CHECK(usage_error({"--frames", "3", "--until", "4"}) ==
+          "--frames and --until exclude each other");
+    CHECK(usage_error({"--frames", "five"}) ==
+          "--frames takes a whole number, not 'five'");
+    CHECK(usage_error({"--frames", "5x"}) == "--frames takes a whole number, not '5x'");
+    CHECK(usage_error({"--frames", "2.5"}) == "--frames takes a whole number, not '2.5'");
+    CHECK(usage_error({"--frames", ""}) == "--frames takes a whole number, not ''");
+    CHECK(usage_error({"--frames", "99999999999999999999"}) ==
+          "--frames takes a whole number, not '99999999999999999999'");
+    CHECK(usage_error({"--until", "soon"}) ==
+          "--until takes a finite number, not 'soon'");
+    CHECK(usage_error({"--until", "inf"}) == "--until takes a finite number, not 'inf'");
+    CHECK(usage_error({"--until", "nan"}) == "--until takes a finite number, not 'nan'");
+    CHECK(usage_error({"--cols", "wide"}) == "--cols takes a whole number, not 'wide'");
+    CHECK(usage_error({"--cols", "7"}) == "--cols takes a number from 8 to 10000, not 7");
+    CHECK(usage_error({"--rows", "6"}) == "--rows takes a number from 7 to 10000, not 6");
+    CHECK(usage_error({"--rows", "10001"}) ==
+          "--rows takes a number from 7 to 10000, not 10001");
+    CHECK(usage_error({"a.scene", "b.scene"}) ==
+          "one scene only: 'a.scene' and 'b.scene'");
+    CHECK(usage_error({"--trace=yes"}) == "--trace takes no value");
+  }
+
+  TEST_CASE(
+      "the program: bad usage gives exit status 2 and a message on stderr and nothing on "
+      "stdout") {
+    const std::vector<std::vector<std::string>> bad = {
+        {"--frobnicate"},
+        {"--frames"},
+        {"--frames", "-3"},
+        {"--mode", "fancy"},
+        {"--frames", "3", "--until", "4"},
+        {"--until", "soon"},
+        {"data/default.scene", "data/crowd.scene"},
+    };
+    for (const auto& arguments : bad) {
+      CAPTURE(arguments.front());
+      const auto run = run_program(arguments);
+      CHECK(run.status == 2);
+      CHECK(run.out.empty());
+      CHECK(run.err ==
+            fmt::format("gas: {}\nTry 'gas --help'.\n", usage_error(arguments)));
+    }
+  }
+
+  TEST_CASE("the program: --help prints the help text and exits 0") {
+    const auto run = run_program({"--help"});
+    CHECK(run.status == 0);
+    CHECK(run.err.empty());
+    CHECK(run.out == gas::help_text());
+    CHECK(run.out.find("usage: gas [SCENE]") != std::string::npos);
+    for (const char* option :
+         {"--frames", "--until", "--keys", "--mode", "--events", "--dump", "--csv",
+          "--cols", "--rows", "--step", "--trace", "--bell"}) {
+      CHECK(run.out.find(option) != std::string::npos);
+    }
+  }
+
+  TEST_CASE(
+      "the program: --frames 5 prints exactly five frames each a status line and a "
+      "screen") {
+    const auto run = run_program({"data/default.scene", "--frames", "5"});
+    CHECK(run.status == 0);
+    CHECK(run.err.empty());
+    const std::vector<Frame> frames = frames_of(run.out);
+    REQUIRE(frames.size() == 5);
+    std::size_t lines = 0;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      CAPTURE(k);
+      // T0 = 1 in the default scene and its first collision is at T = 34.5:
+      // the frames are at T = 1 ... 5.
+      CHECK(frames[k].status.rfind(fmt::format("T={}.000000 T0=1 ", k + 1), 0) == 0);
+      CHECK(bordered(frames[k].screen));
+      CHECK(frames[k].screen.size() ==
+            22);  // 24 rows, less the status line and the cursor's
+      CHECK(frames[k].screen.front().size() <= 80);
+      lines += 1 + frames[k].screen.size();
+    }
+    CHECK(lines == lines_of(run.out).size());  // nothing else printed
+  }
+
+  TEST_CASE("the program: E ends the run and a stopped run with no key left ends too") {
+    const auto ended =
+        run_program({"data/default.scene", "--keys", "..E", "--frames", "10"});
+    CHECK(ended.status == 0);
+    CHECK(frames_of(ended.out).size() == 2);
+
+    // S stops: no frame while stopped; R starts again.
+    const auto stopped =
+        run_program({"data/default.scene", "--keys", ".S..R", "--frames", "3"});
+    CHECK(stopped.status == 0);
+    const std::vector<Frame> frames = frames_of(stopped.out);
+    REQUIRE(frames.size() == 3);
+    CHECK(frames[2].status.rfind("T=3.000000 ", 0) == 0);
+
+    const auto stuck =
+        run_program({"data/default.scene", "--keys", ".S", "--frames", "10"});
+    CHECK(stuck.status == 0);
+    CHECK(frames_of(stuck.out).size() == 1);
+  }
+
+  TEST_CASE("scripted runs of every scene against golden outputs") {
+    // name: the scene and the options, so that the file says how to remake it.
+    struct Script {
+      std::string golden;
+      std::vector<std::string> arguments;
+    };
+    const std::vector<Script> scripts = {
+        {"default--frames-3", {"data/default.scene", "--frames", "3"}},
+        {"default--keys-..B..--frames-5--cols-60--rows-18",
+         {"data/default.scene", "--keys", "..B..", "--frames", "5", "--cols", "60",
+          "--rows", "18"}},
+        {"one-ball--keys->>>>>>--frames-8--cols-40--rows-14",
+         {"data/one-ball.scene", "--keys", ">>>>>>", "--frames", "8", "--cols", "40",
+          "--rows", "14"}},
+        {"head-on--trace--keys->>>>--frames-6--cols-40--rows-12",
+         {"data/head-on.scene", "--trace", "--keys", ">>>>", "--frames", "6", "--cols",
+          "40", "--rows", "12"}},
+        {"crowd--frames-2--cols-60--rows-20",
+         {"data/crowd.scene", "--frames", "2", "--cols", "60", "--rows", "20"}},
+        {"crowd--mode-stats--frames-4--cols-60--rows-18",
+         {"data/crowd.scene", "--mode", "stats", "--frames", "4", "--cols", "60",
+          "--rows", "18"}},
+        {"trajectories--mode-trails--keys->>>>--frames-14--cols-60--rows-20",
+         {"data/trajectories.scene", "--mode", "trails", "--keys", ">>>>", "--frames",
+          "14", "--cols", "60", "--rows", "20"}},
+    };
+    for (const Script& script : scripts) {
+      CAPTURE(script.golden);
+      const auto run = run_program(script.arguments);
+      CHECK(run.status == 0);
+      CHECK(run.err.empty());
+      CHECK_FALSE(frames_of(run.out).empty());
+      for (const Frame& frame : frames_of(run.out)) CHECK(bordered(frame.screen));
+      check_golden("golden/runs/" + script.golden + ".txt", run.out);
+    }
+  }
+
+  TEST_CASE("the keys ..B..: after B the balls retrace their steps in the other tone") {
+    // B is pressed before the third step, at T = 2, so the frame at T = 3
+    // shows the balls where they were at T = 1 (no collision before T = 34).
+    const auto run =
+        run_program({"data/default.scene", "--keys", "..B..", "--frames", "5"});
+    REQUIRE(run.status == 0);
+    const std::vector<Frame> frames = frames_of(run.out);
+    REQUIRE(frames.size() == 5);
+    const char forward = gas::tones[0].ball_glyph, backward = gas::tones[1].ball_glyph;
+    std::vector<std::string> retraced = frames[2].screen;
+    for (std::string& line : retraced)
+      std::replace(line.begin(), line.end(), backward, forward);
+    CHECK(retraced == frames[0].screen);
+    CHECK(frames[2].screen != frames[0].screen);  // it is drawn in the other glyph
+    CHECK(run.out.find(backward) != std::string::npos);
+  }
+
+  TEST_CASE("--events and --csv: their headers and one row per collision and per frame") {
+    // The crowd (many collisions), and the touching balls (three collisions
+    // at T = 0, in one step).
+    for (const std::string scene : {"data/crowd.scene", "data/edge/touching.scene"}) {
+      CAPTURE(scene);
+      const int balls_in_scene =
+          static_cast<int>(gas::read_scene_file(source_path(scene)).balls.size());
+      const Scratch scratch;
+      const std::string events = scratch.file("events.csv"),
+                        csv = scratch.file("stats.csv");
+      const auto run = run_program(
+          {scene, "--until", "60", "--mode", "stats", "--events", events, "--csv", csv});
+      REQUIRE(run.status == 0);
+      CHECK(run.err.empty());
+      const std::vector<Frame> frames = frames_of(run.out);
+      REQUIRE(!frames.empty());
+      CHECK(frames.back().status.rfind("T=60.000000 ", 0) == 0);
+
+      // The last status line says how many collisions there were.
+      std::smatch counts;
+      REQUIRE(std::regex_search(
+          frames.back().status, counts,
+          std::regex(R"(collisions=([0-9]+) \(walls ([0-9]+), balls ([0-9]+)\))")));
+      const std::size_t collisions = std::stoul(counts[1]);
+      CHECK(collisions >= 5);
+
+      const std::vector<std::string> event_lines = lines_of(read_file(events));
+      REQUIRE(event_lines.size() >= 1);
+      CHECK(event_lines[0] == "T,K,N1,N2");
+      CHECK(event_lines.size() - 1 == collisions);
+      std::size_t walls = 0, balls = 0;
+      double last = 0;
+      for (std::size_t i = 1; i < event_lines.size(); ++i) {
+        CAPTURE(event_lines[i]);
+        double t = 0;
+        int k = 0, n1 = 0, n2 = 0;
+        REQUIRE(std::sscanf(event_lines[i].c_str(), "%lf,%d,%d,%d", &t, &k, &n1, &n2) ==
+                4);
+        CHECK(t >= last);  // in order of time
+        CHECK(t <= 60);
+        last = t;
+        CHECK((k >= 1 && k <= 3));
+        CHECK((n1 >= 1 && n1 <= balls_in_scene));
+        if (k == 3) {
+          CHECK((n2 > n1 && n2 <= balls_in_scene));
+          ++balls;
+        } else {
+          CHECK(n2 == 0);
+          ++walls;
+        }
+      }
+      CHECK(walls == std::stoul(counts[2]));
+      CHECK(balls == std::stoul(counts[3]));
+
+      const std::vector<std::string> csv_lines = lines_of(read_file(csv));
+      REQUIRE(csv_lines.size() >= 1);
+      CHECK(csv_lines[0] == gas::csv_header());
+      CHECK(csv_lines.size() - 1 == frames.size());
+      for (std::size_t i = 1; i < csv_lines.size(); ++i) {
+        CHECK(std::count(csv_lines[i].begin(), csv_lines[i].end(), ',') == 8);
+      }
+      CHECK(csv_lines.back().rfind("60,", 0) == 0);
+    }
+  }
+
+  TEST_CASE(
+      "--dump writes a scene that read_scene_file accepts: the same gas as the run") {
+    const Scratch scratch;
+    const std::string dump = scratch.file("dump.scene");
+    const auto run =
+        run_program({"data/default.scene", "--frames", "50", "--dump", dump});
+    REQUIRE(run.status == 0);
+    const gas::Gas dumped = gas::read_scene_file(dump);
+    CHECK(dumped.balls.size() == 7);
+
+    // The same 50 steps here (some end on a collision, so T < 50): the dump
+    // is this gas's scene text, to the byte.
+    gas::Control control =
+        gas::start_control(gas::read_scene_file(source_path("data/default.scene")));
+    for (int k = 0; k < 50; ++k) gas::take_step(control, gas::never, nullptr);
+    REQUIRE(control.wall_collisions + control.ball_collisions > 0);
+    CHECK(read_file(dump) == gas::scene_text(control.gas));
+
+    // And the dumped scene runs on as the original would.
+    const auto again = run_program({dump, "--frames", "1"});
+    CHECK(again.status == 0);
+    CHECK(again.err.empty());
+  }
+
+  TEST_CASE(
+      "an output file that cannot be written is an error (exit 1) before any frame") {
+    const auto run = run_program(
+        {"data/default.scene", "--frames", "1", "--events", "/no-such-dir/e.csv"});
+    CHECK(run.status == 1);
+    CHECK(run.out.empty());
+    CHECK(run.err == "gas: /no-such-dir/e.csv: cannot write this file\n");
+  }
+
+}  // TEST_SUITE

@@ -1,0 +1,544 @@
+// Stage 6 of the article, "output to the screen".
+//
+// - ball_image: a small ball is one glyph; a big one covers exactly the cells
+//   whose middles lie within its radius, and looks round (a row is twice as
+//   tall as a column is wide, so it is about twice as many columns wide as
+//   rows high).
+// - draw_balls erases every old image before drawing the new ones;
+//   draw_trails draws a connected segment from the old centre to the new one
+//   and erases nothing; draw_figures puts each figure at a fixed place.
+// - status_line and csv_row: their formats, and csv numbers that read back
+//   bit for bit.
+// - Display: plain frames (status line + screen) when not a terminal; on a
+//   terminal, only what changed (checked by replaying the output on a small
+//   model of an ANSI terminal).
+// - Golden frames of the default scene at a few model times.
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "stage2_input.hpp"
+#include "stage6_output.hpp"
+#include "stage7_control.hpp"
+#include "support.hpp"
+
+namespace {
+
+using gas::Cell;
+using gas::Point;
+using gas::TextScreen;
+
+// Sets of cells, in reading order.
+struct ReadingOrder {
+  bool operator()(const Cell& p, const Cell& q) const {
+    return p.row != q.row ? p.row < q.row : p.column < q.column;
+  }
+};
+using CellSet = std::set<Cell, ReadingOrder>;
+
+CellSet as_set(const std::vector<Cell>& cells) {
+  return CellSet(cells.begin(), cells.end());
+}
+
+// Every cell of the screen whose character is `c`.
+CellSet cells_showing(const TextScreen& screen, char c) {
+  CellSet cells;
+  for (int row = 0; row < screen.rows; ++row) {
+    for (int column = 0; column < screen.columns; ++column) {
+      if (screen.lines[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] ==
+          c) {
+        cells.insert({column, row});
+      }
+    }
+  }
+  return cells;
+}
+
+// A character screen 60 x 24: one model length per column, two per row.
+TextScreen screen_60x24() {
+  return gas::prepare_character_screen(60, 24);
+}
+
+// The cells a disc of `radius` at `centre` covers, found by looking at
+// every inside cell (not only a bounding box, as ball_image does).
+CellSet disc_by_brute_force(const TextScreen& screen, Point centre, double radius) {
+  CellSet cells{screen.cell_of(centre)};
+  for (int row = 1; row < screen.rows - 1; ++row) {
+    for (int column = 1; column < screen.columns - 1; ++column) {
+      const Point m = screen.middle_of({column, row});
+      if (std::hypot(m.x - centre.x, m.y - centre.y) <= radius)
+        cells.insert({column, row});
+    }
+  }
+  return cells;
+}
+
+// Everything written to a FILE* opened by tmpfile().
+std::string contents(std::FILE* file) {
+  std::fflush(file);
+  std::rewind(file);
+  std::string text;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, n);
+  return text;
+}
+
+// A small model of an ANSI terminal, enough to replay what Display sends:
+// cursor moves ESC[r;cH, ESC[H, clear ESC[2J, and the escapes it ignores
+// (cursor shown/hidden, colours). It counts the characters it prints.
+struct Terminal {
+  std::vector<std::string> lines = std::vector<std::string>(40, std::string(100, ' '));
+  int row = 0, column = 0;
+  int printed = 0;
+
+  void replay(const std::string& out) {
+    printed = 0;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      if (out[i] == '\x1b') {
+        REQUIRE(i + 1 < out.size());
+        REQUIRE(out[i + 1] == '[');
+        std::size_t end = i + 2;
+        while (end < out.size() && !std::isalpha(static_cast<unsigned char>(out[end])))
+          ++end;
+        REQUIRE(end < out.size());
+        const std::string arguments = out.substr(i + 2, end - i - 2);
+        const char command = out[end];
+        if (command == 'H') {
+          int r = 1, c = 1;
+          if (!arguments.empty())
+            REQUIRE(std::sscanf(arguments.c_str(), "%d;%d", &r, &c) == 2);
+          row = r - 1;
+          column = c - 1;
+        } else if (command == 'J') {
+          for (std::string& line : lines) line.assign(line.size(), ' ');
+        }  // 'l', 'h' (cursor), 'm' (colour): nothing to model
+        i = end;
+      } else {
+        lines.at(static_cast<std::size_t>(row)).at(static_cast<std::size_t>(column)) =
+            out[i];
+        ++column;
+        ++printed;
+      }
+    }
+  }
+  // Does the terminal show the status line and the screen, at the top left?
+  bool shows(const std::string& status, const TextScreen& screen) const {
+    std::vector<std::string> want{status};
+    want.insert(want.end(), screen.lines.begin(), screen.lines.end());
+    for (std::size_t r = 0; r < lines.size(); ++r) {
+      std::string expected = r < want.size() ? want[r] : "";
+      expected.resize(lines[r].size(), ' ');
+      if (lines[r] != expected) return false;
+    }
+    return true;
+  }
+};
+
+gas::Figures some_figures() {
+  gas::Figures f;
+  f.time = 12.5;
+  f.display_step = 0.5;
+  f.wall_collisions = 4;
+  f.ball_collisions = 3;
+  f.mean_speed = 1.0 / 3;
+  f.energy = 2.0 / 7;
+  f.energy_drift = -1.25e-16;
+  f.momentum = {0.1, -2.0 / 3};
+  return f;
+}
+
+}  // namespace
+
+TEST_SUITE("stage6") {
+  TEST_CASE(
+      "ball_image: a ball smaller than a character is one glyph in its centre's cell") {
+    const TextScreen screen = screen_60x24();
+    for (const Point centre :
+         {Point{10.5, 10}, Point{10.01, 10.01}, Point{33.99, 29.9}}) {
+      CAPTURE(centre.x);
+      const std::vector<Cell> image = gas::ball_image(screen, centre, 0.45);
+      REQUIRE(image.size() == 1);
+      CHECK(image[0] == screen.cell_of(centre));
+    }
+  }
+
+  TEST_CASE("ball_image: a big ball covers the cells within its radius and looks round") {
+    const TextScreen screen = screen_60x24();
+    for (const double radius : {3.0, 6.0, 8.7}) {
+      for (const Point centre : {Point{30, 22}, Point{30.5, 23}, Point{17.3, 20.9}}) {
+        CAPTURE(radius);
+        CAPTURE(centre.x);
+        CAPTURE(centre.y);
+        const std::vector<Cell> image = gas::ball_image(screen, centre, radius);
+        CHECK(as_set(image).size() == image.size());  // no cell twice
+        CHECK(as_set(image) == disc_by_brute_force(screen, centre, radius));
+
+        // Its extent: a disc 2r across covers 2r columns of width 1 and
+        // 2r / 2 = r rows of height 2, give or take one cell for where its
+        // edges fall inside the first and last cells.
+        int left = 1000, right = -1000, top = 1000, bottom = -1000;
+        for (const Cell& cell : image) {
+          left = std::min(left, cell.column);
+          right = std::max(right, cell.column);
+          top = std::min(top, cell.row);
+          bottom = std::max(bottom, cell.row);
+        }
+        const int width = right - left + 1, height = bottom - top + 1;
+        CHECK(std::abs(width - 2 * radius) <= 1);
+        CHECK(std::abs(height - radius) <= 1);
+      }
+    }
+  }
+
+  TEST_CASE("ball_image: a ball at a wall stays inside the border") {
+    const TextScreen screen = screen_60x24();
+    for (const Point centre : {Point{3, 3}, Point{56, 40}, Point{0.5, 20}}) {
+      const std::vector<Cell> image = gas::ball_image(screen, centre, 5);
+      for (const Cell& cell : image) CHECK(screen.inside(cell));
+    }
+  }
+
+  TEST_CASE("draw_balls erases every old image and then draws every new one") {
+    TextScreen screen = screen_60x24();
+    const gas::Tone& tone = gas::tones[0];
+    const double radius = 3;
+    // Ball 1 moves a little (its old and new images overlap); ball 2 moves
+    // onto ball 3's old place, and ball 3 away: erasing ball 3's old image
+    // after drawing ball 2 would wipe ball 2. A marker elsewhere must survive.
+    gas::Picture picture;
+    picture.old_centres = {{10, 10}, {25, 25}, {40, 30}};
+    picture.centres = {{11.5, 11}, {40, 30}, {52, 38}};
+    const Cell marker{55, 2};
+    screen.at(marker) = 'x';
+    for (const Point& p : picture.old_centres) {
+      for (const Cell& cell : gas::ball_image(screen, p, radius))
+        screen.at(cell) = tone.ball_glyph;
+    }
+
+    gas::draw_balls(screen, picture, radius, tone);
+
+    CellSet drawn;
+    for (const Point& p : picture.centres) {
+      for (const Cell& cell : gas::ball_image(screen, p, radius)) drawn.insert(cell);
+    }
+    CHECK(cells_showing(screen, tone.ball_glyph) ==
+          drawn);  // every new image, nothing else
+    for (const Point& p : picture.old_centres) {
+      for (const Cell& cell : gas::ball_image(screen, p, radius)) {
+        if (drawn.count(cell) == 0) CHECK(screen.at(cell) == ' ');
+      }
+    }
+    CHECK(screen.at(marker) == 'x');
+    CHECK(cells_showing(screen, '+').size() == 4);  // the border is untouched
+  }
+
+  TEST_CASE("draw_balls draws in the tone it is given") {
+    TextScreen screen = screen_60x24();
+    gas::Picture picture;
+    picture.old_centres = picture.centres = {{30, 20}};
+    gas::draw_balls(screen, picture, 0.4, gas::tones[1]);
+    CHECK(screen.at(screen.cell_of({30, 20})) == gas::tones[1].ball_glyph);
+    CHECK(gas::tones[0].ball_glyph != gas::tones[1].ball_glyph);
+  }
+
+  TEST_CASE("draw_trails draws a connected segment from the old centre to the new one") {
+    TextScreen screen = screen_60x24();
+    const gas::Tone& tone = gas::tones[0];
+    gas::Picture picture;
+    picture.old_centres = {{5.5, 3}, {50, 40}, {55, 44}};
+    picture.centres = {
+        {40.2, 25.7}, {47, 12}, {55.3, 44.2}};  // long, steep, inside one cell
+    gas::draw_trails(screen, picture, tone);
+
+    const CellSet drawn = cells_showing(screen, tone.trail_glyph);
+    CellSet expected_union;
+    for (std::size_t i = 0; i < picture.centres.size(); ++i) {
+      CAPTURE(i);
+      const Cell from = screen.cell_of(picture.old_centres[i]);
+      const Cell to = screen.cell_of(picture.centres[i]);
+      CHECK(drawn.count(from) == 1);
+      CHECK(drawn.count(to) == 1);
+      // Walk from `from` to `to` through drawn cells that touch (a king's
+      // move) and stay in the segment's bounding box: the segment is connected.
+      const int low_c = std::min(from.column, to.column),
+                high_c = std::max(from.column, to.column);
+      const int low_r = std::min(from.row, to.row), high_r = std::max(from.row, to.row);
+      CellSet reached{from};
+      std::vector<Cell> queue{from};
+      while (!queue.empty()) {
+        const Cell c = queue.back();
+        queue.pop_back();
+        for (int dr = -1; dr <= 1; ++dr) {
+          for (int dc = -1; dc <= 1; ++dc) {
+            const Cell n{c.column + dc, c.row + dr};
+            if (n.column < low_c || n.column > high_c || n.row < low_r || n.row > high_r)
+              continue;
+            if (drawn.count(n) == 1 && reached.insert(n).second) queue.push_back(n);
+          }
+        }
+      }
+      CHECK(reached.count(to) == 1);
+      // And it is a thin line: one cell per step along its longer direction
+      // (the other segments are drawn outside this one's box).
+      int in_box = 0;
+      for (const Cell& c : drawn) {
+        in_box +=
+            c.column >= low_c && c.column <= high_c && c.row >= low_r && c.row <= high_r;
+      }
+      if (i == 0) CHECK(in_box == std::max(high_c - low_c, high_r - low_r) + 1);
+    }
+
+    // Trails are never erased: a second step adds to the first.
+    const CellSet before = drawn;
+    picture.old_centres = picture.centres;
+    picture.centres = {{55, 25.7}, {47, 3}, {55.3, 44.2}};
+    gas::draw_trails(screen, picture, tone);
+    const CellSet after = cells_showing(screen, tone.trail_glyph);
+    CHECK(std::includes(after.begin(), after.end(), before.begin(), before.end(),
+                        ReadingOrder{}));
+    CHECK(after.size() > before.size());
+    CHECK(cells_showing(screen, '+').size() == 4);
+  }
+
+  TEST_CASE("draw_figures puts each figure at a fixed place whatever its value") {
+    // Two different sets of figures: every label starts at the same cell, and
+    // each value starts at the same column, on both screens.
+    gas::Figures small;
+    gas::Figures big = some_figures();
+    big.time = 123456.75;
+    big.wall_collisions = 1234567;
+    const std::vector<std::string> labels = {
+        "T   model time", "T0  display step", "collisions", "mean speed",
+        "kinetic energy", "energy drift",     "momentum"};
+    const int value_column = 21;  // column 2 + the 19 characters of a label's field
+    for (const gas::Figures* f : {&small, &big}) {
+      TextScreen screen = gas::prepare_character_screen(70, 20);
+      screen.at({40, 2}) = 'x';  // something left from before: wiped
+      gas::draw_figures(screen, *f);
+      for (std::size_t i = 0; i < labels.size(); ++i) {
+        CAPTURE(labels[i]);
+        const std::string& line = screen.lines[1 + 2 * i];  // every other row, from row 1
+        CHECK(line.substr(2, labels[i].size()) == labels[i]);
+        CHECK(line[1] == ' ');
+        CHECK(line[value_column - 1] == ' ');
+        CHECK(line[value_column] != ' ');
+        CHECK(screen.lines[2 + 2 * i].find_first_not_of(' ', 1) ==
+              69);  // rows between: blank
+      }
+      // The values read back: T with 6 decimals (so within 5e-7), T0, the count.
+      CHECK(std::abs(std::stod(screen.lines[1].substr(value_column)) - f->time) <= 5e-7);
+      CHECK(std::stoll(screen.lines[5].substr(value_column)) ==
+            f->wall_collisions + f->ball_collisions);
+    }
+  }
+
+  TEST_CASE("draw_figures on a small screen: one figure a row and cut at the border") {
+    TextScreen screen =
+        gas::prepare_character_screen(20, 8);  // 6 rows inside, 18 columns
+    gas::draw_figures(screen, some_figures());
+    CHECK(screen.lines[1].substr(0, 16) == "| T   model time");
+    CHECK(screen.lines[2].substr(0, 18) == "| T0  display step");
+    for (const std::string& line : screen.lines) {
+      CHECK(line.size() == 20);
+      CHECK((line.back() == '|' || line.back() == '+'));
+    }
+    CHECK(screen.lines[7] == "+------------------+");
+  }
+
+  TEST_CASE(
+      "status_line: T with 6 decimals then T0 and the collisions and the screen and "
+      "stopped") {
+    const gas::Figures f = some_figures();
+    CHECK(gas::status_line(f, gas::ScreenMode::trails, false) ==
+          "T=12.500000 T0=0.5 collisions=7 (walls 4, balls 3) screen=trails");
+    CHECK(gas::status_line(f, gas::ScreenMode::balls, true) ==
+          "T=12.500000 T0=0.5 collisions=7 (walls 4, balls 3) screen=balls [stopped]");
+    CHECK(gas::status_line(f, gas::ScreenMode::stats, false).rfind("T=12.500000 ", 0) ==
+          0);
+  }
+
+  TEST_CASE(
+      "csv_header and csv_row: nine columns and numbers that read back bit for bit") {
+    CHECK(gas::csv_header() ==
+          "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py");
+    gas::Figures f = some_figures();
+    f.time = 37.0 / 3;  // numbers that need all 17 digits
+    f.display_step = 0.1;
+    const std::string row = gas::csv_row(f);
+    std::vector<std::string> fields;
+    std::stringstream stream(row);
+    for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+    REQUIRE(fields.size() == 9);
+    auto same = [](const std::string& text, double value) {
+      return std::bit_cast<std::uint64_t>(std::strtod(text.c_str(), nullptr)) ==
+             std::bit_cast<std::uint64_t>(value);
+    };
+    CHECK(same(fields[0], f.time));
+    CHECK(same(fields[1], f.display_step));
+    CHECK(fields[2] == "4");
+    CHECK(fields[3] == "3");
+    CHECK(same(fields[4], f.mean_speed));
+    CHECK(same(fields[5], f.energy));
+    CHECK(same(fields[6], f.energy_drift));
+    CHECK(same(fields[7], f.momentum.x));
+    CHECK(same(fields[8], f.momentum.y));
+  }
+
+  TEST_CASE("measure: the figures of a gas") {
+    gas::Gas g;
+    g.radius = 1;
+    g.width = g.height = 100;
+    g.display_step = 0.25;
+    g.time = 3;
+    g.balls = {{10, 10, 3, 4, 0}, {50, 50, 0, -1, 0}};
+    const gas::Figures f = gas::measure(g, 10, 5, 2);
+    CHECK(f.time == 3);
+    CHECK(f.display_step == 0.25);
+    CHECK(f.mean_speed == 3);      // (5 + 1) / 2
+    CHECK(f.energy == 13);         // (25 + 1) / 2
+    CHECK(f.energy_drift == 0.3);  // (13 - 10) / 10
+    CHECK(f.momentum.x == 3);
+    CHECK(f.momentum.y == 3);
+    CHECK(gas::measure(g, 0, 0, 0).energy_drift ==
+          0);  // no energy at the start: no drift
+  }
+
+  TEST_CASE(
+      "Display not on a terminal: every frame whole and headed by its status line") {
+    std::FILE* file = std::tmpfile();
+    REQUIRE(file != nullptr);
+    TextScreen screen = gas::prepare_character_screen(12, 5);
+    gas::Display display(file, false,
+                         true);  // colour is asked for, but never used off a terminal
+    display.show(screen, "status one", gas::tones[0]);
+    screen.at({3, 2}) = gas::tones[0].ball_glyph;
+    display.show(screen, "status two", gas::tones[0]);
+    display.finish();
+    std::string expected = "status one\n";
+    for (const std::string& line : gas::prepare_character_screen(12, 5).lines)
+      expected += line + "\n";
+    expected += "status two\n";
+    for (const std::string& line : screen.lines) expected += line + "\n";
+    CHECK(contents(file) == expected);
+    std::fclose(file);
+  }
+
+  TEST_CASE("Display on a terminal: the first frame whole and then only what changed") {
+    std::FILE* file = std::tmpfile();
+    REQUIRE(file != nullptr);
+    TextScreen screen = gas::prepare_character_screen(30, 10);
+    const gas::Tone& tone = gas::tones[0];
+    gas::Display display(file, true, false);
+    Terminal terminal;
+    long written = 0;
+    auto show = [&](const std::string& status) {
+      display.show(screen, status, tone);
+      const std::string all = contents(file);
+      const std::string out = all.substr(static_cast<std::size_t>(written));
+      written = static_cast<long>(all.size());
+      std::fseek(file, 0, SEEK_END);
+      terminal.replay(out);
+      return out;
+    };
+    const std::string park = "\x1b[12;1H";  // the cursor below the frame: row 1 + 10 + 1
+
+    const std::string first = show("T=0");
+    CHECK(first.rfind("\x1b[?25l\x1b[H\x1b[2J", 0) ==
+          0);  // cursor hidden, screen cleared
+    CHECK(terminal.shows("T=0", screen));
+    CHECK(terminal.printed == 3 + 30 * 10);
+
+    SUBCASE("an unchanged frame: only the cursor moves") {
+      CHECK(show("T=0") == park);
+      CHECK(terminal.printed == 0);
+    }
+    SUBCASE("two cells changed: two characters sent") {
+      screen.at({4, 3}) = tone.ball_glyph;
+      screen.at({20, 7}) = tone.ball_glyph;
+      const std::string out = show("T=0");
+      CHECK(terminal.printed == 2);
+      CHECK(terminal.shows("T=0", screen));
+      CHECK(out.size() < 30);  // two cursor moves, two glyphs, the park
+      CHECK(out.substr(out.size() - park.size()) == park);
+    }
+    SUBCASE("a shorter status line: its tail is blanked") {
+      show("T=1 [stopped]");
+      CHECK(terminal.shows("T=1 [stopped]", screen));
+      show("T=1");
+      // "[stopped]" becomes nine spaces; the space before it is one already.
+      CHECK(terminal.printed == 9);
+      CHECK(terminal.shows("T=1", screen));
+    }
+    SUBCASE("after invalidate(), the whole frame again") {
+      display.invalidate();
+      show("T=0");
+      CHECK(terminal.printed == 3 + 30 * 10);
+      CHECK(terminal.shows("T=0", screen));
+    }
+    std::fclose(file);
+  }
+
+  TEST_CASE(
+      "Display on a terminal with colour: glyphs coloured and the picture the same") {
+    std::FILE* file = std::tmpfile();
+    REQUIRE(file != nullptr);
+    TextScreen screen = gas::prepare_character_screen(20, 6);
+    screen.at({5, 2}) = gas::tones[1].ball_glyph;
+    gas::Display display(file, true, true);
+    display.show(screen, "T=0", gas::tones[1]);
+    const std::string out = contents(file);
+    CHECK(out.find(fmt::format("\x1b[1;{}m{}\x1b[0m", gas::tones[1].ansi_colour,
+                               gas::tones[1].ball_glyph)) != std::string::npos);
+    Terminal terminal;
+    terminal.replay(out);
+    CHECK(terminal.shows("T=0", screen));
+    std::fclose(file);
+  }
+
+  TEST_CASE(
+      "golden frames: the default scene on an 80 x 22 screen at a few model times") {
+    // As the program draws them: one screen, every step drawn onto it, so the
+    // frames also show that no old image is ever left behind.
+    gas::Control control = gas::start_control(
+        gas::read_scene_file(gas::testing::source_path("data/default.scene")));
+    TextScreen screen = gas::prepare_screen(control.gas, 80, 22);
+    REQUIRE(screen.columns <= 80);
+    REQUIRE(screen.rows == 22);
+    const double radius = control.gas.radius;
+    const gas::Tone& tone = gas::tones[0];
+    gas::draw_balls(screen, control.picture, radius, tone);
+    for (const double time : {0.0, 10.0, 50.0, 137.5}) {
+      while (control.gas.time < time) {
+        gas::take_step(control, time, nullptr);
+        gas::draw_balls(screen, control.picture, radius, tone);
+      }
+      REQUIRE(control.gas.time == time);
+      const gas::Figures figures =
+          gas::measure(control.gas, control.starting_energy, control.wall_collisions,
+                       control.ball_collisions);
+      std::string frame = gas::status_line(figures, gas::ScreenMode::balls, false) + "\n";
+      for (const std::string& line : screen.lines) frame += line + "\n";
+      // A ball of diameter 8 spans 8 / 4.8 < 2 columns and 8 / 9.6 < 1 row
+      // (this screen's cells are 4.8 x 9.6), so its image is one or two
+      // glyphs side by side; together, at most two per ball.
+      REQUIRE(screen.column_width == 4.8);
+      const auto glyphs = static_cast<std::size_t>(
+          std::count(frame.begin(), frame.end(), tone.ball_glyph));
+      CHECK(glyphs >= 1);
+      CHECK(glyphs <= 2 * control.gas.balls.size());
+      gas::testing::check_golden(
+          fmt::format("golden/frames/default-80x22-T{:g}.txt", time), frame);
+    }
+  }
+
+}  // TEST_SUITE
