@@ -74,7 +74,7 @@ std::string help_text() {
 
 usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|stats]
            [--events FILE] [--dump FILE] [--csv FILE] [--cols N] [--rows N]
-           [--step] [--trace] [--bell] [--help]
+           [--step] [--trace] [--bell] [--strategy scan|table|grid] [--help]
 
   SCENE            a scene file (see data/README.md); none: the built-in default scene
   --frames N       take N display steps, then exit
@@ -90,6 +90,12 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|s
   --step           wait for Enter after every display step (a line may hold keys)
   --trace          print each stage of the article as it runs, with T, T1, TC, K, N1, N2
   --bell           ring the terminal bell on collisions
+  --strategy S     how stage 4 finds the first collision: scan (the article's),
+                   table (each ball's next event) or grid (cells and an event
+                   queue); the same collisions, at different speeds. Default:
+                   scan up to )" +
+         std::to_string(most_balls_for_scan) + R"( balls, table up to )" +
+         std::to_string(most_balls_for_table) + R"(, grid beyond
   --help           show this text
 
 keys (in a terminal, without Enter): S stop, R run, B reverse all velocities,
@@ -160,6 +166,13 @@ Options parse_options(const std::vector<std::string>& arguments) {
                                      argument, smallest, size));
       }
       (argument == "--cols" ? options.columns : options.rows) = static_cast<int>(size);
+    } else if (argument == "--strategy") {
+      const std::string name = value();
+      options.strategy = strategy_named(name);
+      if (!options.strategy) {
+        throw UsageError(
+            fmt::format("--strategy takes scan, table or grid, not '{}'", name));
+      }
     } else if (argument == "--step") {
       flag(options.step);
     } else if (argument == "--trace") {
@@ -191,7 +204,7 @@ class ConsoleRun {
       : options_(options),
         terminal_(is_terminal(1) && !options.trace),
         interactive_(terminal_ && is_terminal(0) && !options.keys && !options.step),
-        control_(start_control(std::move(gas))),
+        control_(start_control(std::move(gas), options.strategy)),
         display_(stdout, terminal_, terminal_ && std::getenv("NO_COLOR") == nullptr) {
     const TerminalSize size = terminal_size().value_or(TerminalSize{});
     columns_ = options.columns.value_or(size.columns);
@@ -207,6 +220,9 @@ class ConsoleRun {
           options.keys ? static_cast<long long>(options.keys->size()) : 0;
       frame_limit_ = std::max(default_plain_frames, keys);
     }
+    // The statistics screen's averages start now; a histogram bin for every two
+    // columns, at most 40.
+    statistics_.emplace(control_.gas, tallies(), std::clamp(columns_ / 2 - 2, 1, 40));
     events_.open(options.events_path);
     csv_.open(options.csv_path);
     if (events_) fmt::print(events_.get(), "T,K,N1,N2\n");
@@ -303,18 +319,28 @@ class ConsoleRun {
     return true;
   }
 
+  // What stage 7 has counted, for the statistics (lesson 11).
+  Tallies tallies() const {
+    return {control_.gas.time, control_.horizontal_wall_push,
+            control_.vertical_wall_push, control_.ball_collisions};
+  }
+
+  Figures figures() const {
+    Figures f = measure(control_.gas, control_.starting_energy, control_.wall_collisions,
+                        control_.ball_collisions);
+    add_statistics(f, *statistics_);
+    return f;
+  }
+
   void record(const Step& step) {
+    statistics_->record(control_.gas, tallies());
     if (events_) {
       for (const Collision& c : step.collisions) {
         fmt::print(events_.get(), "{:.17g},{},{},{}\n", c.time, static_cast<int>(c.kind),
                    c.first, c.second);
       }
     }
-    if (csv_) {
-      const Figures figures = measure(control_.gas, control_.starting_energy,
-                                      control_.wall_collisions, control_.ball_collisions);
-      fmt::print(csv_.get(), "{}\n", csv_row(figures));
-    }
+    if (csv_) fmt::print(csv_.get(), "{}\n", csv_row(figures()));
     if (options_.bell && !step.collisions.empty()) {
       const auto now = std::chrono::steady_clock::now();
       if (now - last_bell_ >= std::chrono::duration<double>(bell_interval_seconds)) {
@@ -326,8 +352,7 @@ class ConsoleRun {
 
   // Stage 6: draws the screen the options ask for and sends it out.
   void show() {
-    const Figures figures = measure(control_.gas, control_.starting_energy,
-                                    control_.wall_collisions, control_.ball_collisions);
+    const Figures figures = this->figures();
     const Tone& tone = tones[control_.tone];
     if (options_.trace)
       fmt::print("stage 6  output: the {} screen\n", mode_name(options_.mode));
@@ -354,6 +379,7 @@ class ConsoleRun {
   int columns_ = 0;
   int rows_ = 0;
   std::optional<long long> frame_limit_;
+  std::optional<GasStatistics> statistics_;
   OutputFile events_;
   OutputFile csv_;
   TextScreen screen_;

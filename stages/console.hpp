@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "stage4_strategy.hpp"
 #include "stage6_output.hpp"
 
 namespace gas {
@@ -36,6 +37,7 @@ struct Options {
   bool trace = false;                      // --trace
   bool bell = false;                       // --bell
   bool help = false;                       // --help
+  std::optional<Strategy> strategy;        // --strategy; none: chosen by N
 };
 
 // Reads the arguments after the program's name. Throws UsageError.

@@ -46,6 +46,15 @@ inline constexpr double contact_tolerance = 1e-9;
 inline constexpr double smallest_magnitude = 1e-75;
 inline constexpr double largest_magnitude = 1e75;
 
+// The 'random COUNT SEED SPEED' line (data/README.md): at most this many
+// balls, placed at random, each given at most this many tries to find a free
+// place (random placement of discs fills about 0.55 of a table at most; the
+// tries keep a scene that asks for more from running for ever).
+inline constexpr double most_random_balls = 1e5;
+inline constexpr int most_tries_per_random_ball = 10000;
+// The densest packing of equal discs covers pi / (2 sqrt 3) of the plane.
+inline constexpr double densest_packing = 0.9068996821171089;
+
 // Parses scene text; `file_name` is used only in messages.
 Gas parse_scene(std::string_view text, const std::string& file_name);
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gas {
 
@@ -11,6 +12,7 @@ namespace gas {
 // along x never does, so the division is never reached. Here the same
 // question is asked of the sign of the velocity: only a centre moving towards
 // a wall has a time to it.
+#ifndef GAS_STUDENT_TIME_TO_WALL  // see lessons/exercises/04-time-to-wall
 // [anchor: time-to-wall]
 double time_to_wall(double position, double velocity, double low, double high) {
   if (velocity > 0) return std::max(0.0, (high - position) / velocity);
@@ -18,6 +20,7 @@ double time_to_wall(double position, double velocity, double low, double high) {
   return never;  // at rest along this axis: no wall, no division
 }
 // [/anchor: time-to-wall]
+#endif
 
 // The article's quadratic, with d = r2 - r1 and w = v2 - v1 at a common time:
 //   |d + w t|^2 = (2a)^2,  i.e.  (w.w) t^2 + 2 (d.w) t + (d.d - 4a^2) = 0.
@@ -29,6 +32,7 @@ double time_to_wall(double position, double velocity, double low, double high) {
 // (balls close together: every collision a moment after another), and loses
 // the digits of t; the second only adds two positive numbers. So we use the
 // second.
+#ifndef GAS_STUDENT_TIME_OF_CONTACT  // see lessons/exercises/05-time-of-contact
 // [anchor: time-of-contact]
 double time_of_contact(const Ball& p, const Ball& q, double diameter) {
   // Both centres at the later of the two balls' times.
@@ -38,7 +42,15 @@ double time_of_contact(const Ball& p, const Ball& q, double diameter) {
   const double dx = rq.x - rp.x, dy = rq.y - rp.y;  // d = r2 - r1
   const double wx = q.vx - p.vx, wy = q.vy - p.vy;  // w = v2 - v1
   const double b = dx * wx + dy * wy;               // d.w
-  if (b >= 0) return never;                         // moving apart, or no relative motion
+  // The balls approach if d.w < 0 — by more than round-off: the velocities
+  // are known to about epsilon times their size, and a d.w below that
+  // floor is noise. (Two touching balls whose velocities differ in the last
+  // bit would otherwise "collide" for ever at one instant: the change VI
+  // makes is too small to alter a single bit. Lesson 4 tells the story.)
+  const double noise =
+      4 * std::numeric_limits<double>::epsilon() * (std::fabs(dx) + std::fabs(dy)) *
+      (std::fabs(p.vx) + std::fabs(p.vy) + std::fabs(q.vx) + std::fabs(q.vy));
+  if (b >= -noise) return never;  // moving apart, or no relative motion worth the name
   const double c = dx * dx + dy * dy - diameter * diameter;
   if (c <= 0) return start;  // touching or overlapping: now
   const double ww = wx * wx + wy * wy;
@@ -47,7 +59,9 @@ double time_of_contact(const Ball& p, const Ball& q, double diameter) {
   return start + c / (std::sqrt(discriminant) - b);  // the smaller root
 }
 // [/anchor: time-of-contact]
+#endif
 
+#ifndef GAS_STUDENT_FIND_FIRST_COLLISION  // see lessons/exercises/06-find-first-collision
 // [anchor: find-first-collision]
 Collision find_first_collision(const Gas& gas, const CentreLimits& limits) {
   Collision first;  // TC = "a large number", K = 0, N1 = N2 = 0
@@ -83,5 +97,6 @@ Collision find_first_collision(const Gas& gas, const CentreLimits& limits) {
   return first;
 }
 // [/anchor: find-first-collision]
+#endif
 
 }  // namespace gas

@@ -3,6 +3,7 @@
 
 namespace gas {
 
+#ifndef GAS_STUDENT_SHIFT_TIME  // see lessons/exercises/08-shift-time
 // [anchor: shift-time]
 void shift_time(Gas& gas, Picture& picture, double new_time) {
   gas.time = new_time;                          // T = T + T1
@@ -13,6 +14,7 @@ void shift_time(Gas& gas, Picture& picture, double new_time) {
   }
 }
 // [/anchor: shift-time]
+#endif
 
 // The article's VI with d = r2 - r1, w = v2 - v1:
 //   VI = (d.w) / 4a^2,  v1' = v1 + VI d,  v2' = v2 - VI d.
@@ -20,6 +22,7 @@ void shift_time(Gas& gas, Picture& picture, double new_time) {
 // At contact |d|^2 = 4a^2; we divide by the |d|^2 of the actual centres, which
 // round-off may leave a hair off 4a^2, because only then is the kinetic energy
 // exactly what it was (lesson 5 shows the algebra).
+#ifndef GAS_STUDENT_COLLIDE_BALLS  // see lessons/exercises/07-collide-balls
 // [anchor: collide-balls]
 void collide_balls(Ball& p, Ball& q) {
   const double dx = q.x - p.x, dy = q.y - p.y;                  // d = r2 - r1
@@ -31,6 +34,7 @@ void collide_balls(Ball& p, Ball& q) {
   q.vy -= vi * dy;
 }
 // [/anchor: collide-balls]
+#endif
 
 namespace {
 

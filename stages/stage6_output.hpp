@@ -19,6 +19,7 @@
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
 #include "stage5_new_coordinates.hpp"
+#include "stage6_statistics.hpp"
 
 namespace gas {
 
@@ -58,13 +59,35 @@ struct Figures {
   double energy = 0;              // kinetic energy, unit mass
   double energy_drift = 0;        // (E - E at start) / E at start; 0 if E at start is 0
   Point momentum;                 // total momentum, unit mass
+  // Beyond the article, kinetic theory (lesson 11): what it predicts, and
+  // the time averages since the start to set beside it.
+  std::size_t balls = 0;             // N
+  double rms_speed = 0;              // sqrt(2 E / N), now
+  KineticTheory theory;              // the predictions for this gas
+  Average average_mean_speed;        // the mean speed, averaged over time
+  Average pressure;                  // from the push on the walls
+  Average compressibility;           // Z = P (A1 - 2a)(A2 - 2a) / (N kT)
+  Average collision_rate;            // collisions of two balls per ball per time
+  double mean_free_path = not_known; // average mean speed / collision rate
+  std::vector<double> speed_fractions;  // the histogram (GasStatistics)
+  double bin_width = 0;                 // of its bins
+  double fraction_beyond = 0;           // faster than its last bin
 };
 
 Figures measure(const Gas& gas, double starting_energy, long long wall_collisions,
                 long long ball_collisions);
 
-// Statistics screen: the figures at fixed places inside the border.
+// Adds the time averages and the histogram of `statistics` to the figures.
+void add_statistics(Figures& figures, const GasStatistics& statistics);
+
+// Statistics screen: the figures at fixed places inside the border, each
+// beside its prediction, and under them the histogram of speeds with the
+// Maxwell-Boltzmann curve, as far as the screen has room.
 void draw_figures(TextScreen& screen, const Figures& figures);
+
+// The histogram part of it, in rows first_row ... last_row.
+void draw_histogram(TextScreen& screen, const Figures& figures, int first_row,
+                    int last_row);
 
 // The one-line heading above every frame.
 std::string status_line(const Figures& figures, ScreenMode mode, bool stopped);

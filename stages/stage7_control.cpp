@@ -9,8 +9,10 @@
 
 namespace gas {
 
-Control start_control(Gas gas) {
+Control start_control(Gas gas, std::optional<Strategy> strategy) {
   Control control;
+  control.finder =
+      FirstCollisionFinder(strategy.value_or(strategy_for(gas.balls.size())));
   control.gas = std::move(gas);
   control.limits = centre_limits(control.gas);
   control.starting_energy = kinetic_energy(control.gas);
@@ -46,9 +48,12 @@ void trace_first_collision(std::FILE* trace, const Collision& c) {
              static_cast<int>(c.kind), kind_name(c.kind), c.first, c.second);
 }
 
-// Stage 4, as the loop calls it.
+// Stage 4, as the loop calls it. At the start, and after a key changed the
+// velocities, every prediction is made afresh; otherwise the finder goes on
+// from the collisions it was told of (for the article's scan: the same thing).
 void find_next(Control& control, std::FILE* trace) {
-  control.next = find_first_collision(control.gas, control.limits);
+  if (control.must_find_collision) control.finder.rebuild(control.gas, control.limits);
+  control.next = control.finder.first(control.gas);
   control.must_find_collision = false;
   trace_first_collision(trace, control.next);
 }
@@ -56,7 +61,14 @@ void find_next(Control& control, std::FILE* trace) {
 // Stage 5's velocity part, as the loop calls it.
 void carry_out(Control& control, Step& step, std::FILE* trace) {
   const Collision& c = control.next;
+  // The wall's share of the bounce (lesson 11): 2 |v_normal| before it.
+  const Ball& first = control.gas.balls[static_cast<std::size_t>(c.first - 1)];
+  if (c.kind == CollisionKind::horizontal_wall)
+    control.horizontal_wall_push += 2 * std::abs(first.vy);
+  if (c.kind == CollisionKind::vertical_wall)
+    control.vertical_wall_push += 2 * std::abs(first.vx);
   apply_collision(control.gas, control.limits, c);
+  control.finder.update(control.gas, c);
   if (c.kind == CollisionKind::balls) {
     ++control.ball_collisions;
   } else {
@@ -128,6 +140,7 @@ void trace_decision(const Control& control, std::FILE* trace) {
              control.next.time, control.gas.time);
 }
 
+#ifndef GAS_STUDENT_PRESS_KEY  // see lessons/exercises/10-press-key
 // [anchor: press-key]
 KeyEffect press_key(Control& control, char key) {
   switch (std::toupper(static_cast<unsigned char>(key))) {
@@ -166,5 +179,6 @@ KeyEffect press_key(Control& control, char key) {
   return KeyEffect::none;
 }
 // [/anchor: press-key]
+#endif
 
 }  // namespace gas

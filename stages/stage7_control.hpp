@@ -12,11 +12,13 @@
 #pragma once
 
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
 #include "stage4_first_collision.hpp"
+#include "stage4_strategy.hpp"
 #include "stage5_new_coordinates.hpp"
 
 namespace gas {
@@ -27,10 +29,16 @@ struct Control {
   Gas gas;                          // the model: R, a, A1, A2, T, T0
   CentreLimits limits;              // from stage 3
   Collision next;                   // TC, K, N1, N2 of stage 4
-  bool must_find_collision = true;  // go to stage 4 before the next step
+  FirstCollisionFinder finder;      // how stage 4 finds them (lesson 10)
+  bool must_find_collision = true;  // stage 4 from scratch before the next step
   Picture picture;                  // RS and the centres at T
   long long wall_collisions = 0;    // K = 1 or 2, so far
   long long ball_collisions = 0;    // K = 3, so far
+  // Beyond the article, for the statistics screen (lesson 11): the momentum
+  // the walls have received, unit mass. A bounce reverses the velocity's
+  // component across the wall, so the wall receives 2 |v_normal|.
+  double horizontal_wall_push = 0;  // K = 1: the sum of 2 |vy|
+  double vertical_wall_push = 0;    // K = 2: the sum of 2 |vx|
   double starting_energy = 0;       // kinetic energy at T = 0, for the drift
   int tone = 0;                     // the base colour's tone; B changes it
   bool stopped = false;             // S stops, R starts again
@@ -38,8 +46,9 @@ struct Control {
 };
 // [/anchor: control]
 
-// Sets the loop up for a gas read by stage 2.
-Control start_control(Gas gas);
+// Sets the loop up for a gas read by stage 2, with stage 4 done the given way
+// (none: the way strategy_for picks for the number of balls).
+Control start_control(Gas gas, std::optional<Strategy> strategy = std::nullopt);
 
 // The most collisions allowed at one instant of model time. Real cascades at
 // one instant (a row of touching balls struck at one end) take about N

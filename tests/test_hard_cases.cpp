@@ -323,6 +323,14 @@ TEST_SUITE("hard-cases") {
     check_invariants(run_checked(hard_scene("touching-rounded"), 10000, 1e6));
   }
 
+  TEST_CASE("the last-bit trap found by the fuzzer lets time move on") {
+    // Without the floor on "approaching" in time_of_contact this scene stops
+    // at T = 12.418... with "more than 1900 collisions at one instant".
+    Log log;
+    REQUIRE_NOTHROW(log = run_checked(hard_scene("last-bit-trap"), 10000, 1e6));
+    check_invariants(log);
+  }
+
   TEST_CASE("very slow and very fast balls in one scene") {
     check_invariants(run_checked(hard_scene("slow-and-fast"), 100000, 1e7));
   }

@@ -1,10 +1,10 @@
 // How long does double precision follow the true motion of the gas?
 //
-// An independent reference — written here from the article's formulas, with
-// every ball moved at every event and the quadratic solved in its textbook
-// form — runs the default scene in long double (64-bit mantissa) and in
-// __float128 (113-bit, soft float; its square root by Newton's method, so no
-// extra library). The program's stages run in double (53 bits). We compare
+// An independent reference (tests/reference_gas.hpp) — written from the
+// article's formulas, with every ball moved at every event and the quadratic
+// solved in its textbook form — runs the default scene in long double
+// (64-bit mantissa) and in __float128 (113-bit, soft float; its square root
+// by Newton's method, so no extra library). The program's stages run in double (53 bits). We compare
 // the sequences of collisions (K, N1, N2) and their times.
 //
 // Why the agreement is finite: a collision of two discs turns a small error
@@ -22,95 +22,15 @@
 #include <vector>
 
 #include "console.hpp"
+#include "reference_gas.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
 namespace {
 
-using gas::CollisionKind;
-
-struct Event {
-  long double time;  // TC, rounded to long double for comparisons
-  int kind;          // K
-  int first;         // N1
-  int second;        // N2
-  bool operator==(const Event& o) const {
-    return kind == o.kind && first == o.first && second == o.second;
-  }
-};
-
-long double to_long_double(long double x) {
-  return x;
-}
-long double to_long_double(__float128 x) {
-  return static_cast<long double>(x);
-}
-
-// Square roots: long double has one; for __float128 Newton's method from the
-// long double root doubles the correct bits at each step (64 -> 113 in one
-// step, a second one for safety).
-long double root(long double x) {
-  return std::sqrt(x);
-}
-__float128 root(__float128 x) {
-  if (x <= 0) return 0;
-  __float128 r = std::sqrt(static_cast<long double>(x));
-  for (int i = 0; i < 2; ++i) r = (r + x / r) / 2;
-  return r;
-}
-
-template <class Real>
-std::vector<Event> reference_events(const gas::Gas& gas, int count) {
-  struct State {
-    Real x, y, vx, vy;
-  };
-  std::vector<State> balls;
-  for (const gas::Ball& b : gas.balls) balls.push_back({b.x, b.y, b.vx, b.vy});
-  const Real a = gas.radius;
-  const Real low = a, right = Real(gas.width) - a, top = Real(gas.height) - a;
-  const auto n = static_cast<int>(balls.size());
-  Real now = 0;
-  std::vector<Event> events;
-  while (static_cast<int>(events.size()) < count) {
-    Real best = -1;
-    int kind = 0, first = 0, second = 0;
-    auto offer = [&](Real dt, int k, int i, int j) {
-      if (dt >= 0 && (best < 0 || dt < best)) best = dt, kind = k, first = i, second = j;
-    };
-    for (int i = 0; i < n; ++i) {
-      const State& b = balls[static_cast<std::size_t>(i)];
-      if (b.vy > 0) offer((top - b.y) / b.vy, 1, i + 1, 0);
-      if (b.vy < 0) offer((low - b.y) / b.vy, 1, i + 1, 0);
-      if (b.vx > 0) offer((right - b.x) / b.vx, 2, i + 1, 0);
-      if (b.vx < 0) offer((low - b.x) / b.vx, 2, i + 1, 0);
-    }
-    for (int i = 0; i < n; ++i) {
-      for (int j = i + 1; j < n; ++j) {
-        const State& p = balls[static_cast<std::size_t>(i)];
-        const State& q = balls[static_cast<std::size_t>(j)];
-        const Real dx = q.x - p.x, dy = q.y - p.y, wx = q.vx - p.vx, wy = q.vy - p.vy;
-        const Real ww = wx * wx + wy * wy, b = dx * wx + dy * wy;
-        const Real c = dx * dx + dy * dy - 4 * a * a;
-        const Real disc = b * b - ww * c;
-        if (b < 0 && disc > 0) offer((-b - root(disc)) / ww, 3, i + 1, j + 1);
-      }
-    }
-    REQUIRE(kind != 0);
-    for (State& b : balls) b.x += b.vx * best, b.y += b.vy * best;
-    now += best;
-    State& p = balls[static_cast<std::size_t>(first - 1)];
-    if (kind == 1) p.vy = -p.vy;
-    if (kind == 2) p.vx = -p.vx;
-    if (kind == 3) {
-      State& q = balls[static_cast<std::size_t>(second - 1)];
-      const Real dx = q.x - p.x, dy = q.y - p.y;
-      const Real vi = (dx * (q.vx - p.vx) + dy * (q.vy - p.vy)) / (dx * dx + dy * dy);
-      p.vx += vi * dx, q.vx -= vi * dx, p.vy += vi * dy, q.vy -= vi * dy;
-    }
-    events.push_back({to_long_double(now), kind, first, second});
-  }
-  return events;
-}
+using gas::reference::agreement;
+using gas::reference::Event;
+using gas::reference::reference_events;
 
 // The program's own collisions, through stage 7 with a display step so long
 // that every step ends on a collision.
@@ -126,13 +46,6 @@ std::vector<Event> program_events(gas::Gas gas, int count) {
   }
   events.resize(static_cast<std::size_t>(count));
   return events;
-}
-
-// How many leading collisions two runs share (same K, N1, N2 in order).
-int agreement(const std::vector<Event>& a, const std::vector<Event>& b) {
-  std::size_t i = 0;
-  while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
-  return static_cast<int>(i);
 }
 
 }  // namespace

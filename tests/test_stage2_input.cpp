@@ -1,7 +1,8 @@
 // Stage 2 of the article, "input": the scene-file reader.
 //
 // - Every teaching scene (data/*.scene) and every edge scene (data/edge/)
-//   is accepted, with as many balls as the file has 'ball' lines.
+//   is accepted, with as many balls as the file has 'ball' lines (and as
+//   its 'random' line places).
 // - Every malformed scene (data/bad/) is refused by the program: exit status
 //   2, nothing on standard output, and on standard error one line
 //   "FILE:LINE: what is wrong" equal to the golden file beside the scene
@@ -50,7 +51,8 @@ std::vector<std::string> files_in(const std::string& folder,
 }
 
 // The number of 'ball' lines of a scene file, counted without stage 2: the
-// first word of each line, after cutting comments and a CR.
+// first word of each line, after cutting comments and a CR; plus the COUNT of
+// a 'random' line.
 std::size_t count_ball_lines(const std::string& text) {
   std::size_t count = 0;
   std::size_t start = 0;
@@ -61,6 +63,9 @@ std::size_t count_ball_lines(const std::string& text) {
     line = line.substr(0, line.find('#'));
     const std::size_t first = line.find_first_not_of(" \t");
     if (first != std::string::npos && line.compare(first, 5, "ball ") == 0) ++count;
+    // 'random COUNT SEED SPEED' places COUNT balls.
+    if (first != std::string::npos && line.compare(first, 7, "random ") == 0)
+      count += std::stoul(line.substr(first + 7));
     start = end + 1;
   }
   return count;
@@ -220,7 +225,7 @@ TEST_SUITE("stage2") {
 
     // The lines are still counted right: the error names the same line.
     CHECK(refusal(lf + "bogus 1\n", "f") ==
-          "f:9: unknown keyword 'bogus' (expected a, T0, A1, A2, N or ball)");
+          "f:9: unknown keyword 'bogus' (expected a, T0, A1, A2, N, ball or random)");
     CHECK(refusal(crlf + "bogus 1\r\n", "f") == refusal(lf + "bogus 1\n", "f"));
 
     // A byte-order mark is only skipped at the very start; elsewhere it is a
@@ -229,7 +234,7 @@ TEST_SUITE("stage2") {
         refusal(small_table + "\xEF\xBB\xBF"
                               "ball 20 30 1 1\n",
                 "f") ==
-        "f:5: unknown keyword '\\xef\\xbb\\xbfball' (expected a, T0, A1, A2, N or ball)");
+        "f:5: unknown keyword '\\xef\\xbb\\xbfball' (expected a, T0, A1, A2, N, ball or random)");
   }
 
   TEST_CASE(

@@ -1,0 +1,87 @@
+// Exercise 03, TextScreen::cell_of: the provided tests (suite exercise-03).
+//
+// Every test here fails against the untouched stub (CI checks that) and
+// passes against stages/stage3_screen.cpp. Don't change this file to make a
+// test pass: change your cell_of.cpp.
+//
+// The screen of these tests: 12 columns by 7 rows, border included, so the
+// inside is columns 1..10 and rows 1..5. A column is 2 units of the table
+// wide and a row 4 units tall, so the inside covers the table
+// 0 <= x <= 20, 0 <= y <= 20. All the numbers are exact in binary.
+//
+//          x: 0   2   4  ...  18  20
+//   row 1    y from 16 to 20   (the top of the table)
+//   row 5    y from  0 to  4   (the bottom)
+#include <doctest/doctest.h>
+
+#include "exercise_test.hpp"
+#include "stage3_screen.hpp"
+
+namespace {
+
+using gas::Cell;
+
+gas::TextScreen grid() {
+  gas::TextScreen screen;
+  screen.columns = 12;
+  screen.rows = 7;
+  screen.column_width = 2;
+  screen.row_height = 4;
+  return screen;
+}
+
+}  // namespace
+
+TEST_SUITE("exercise-03") {
+  EXERCISE_TEST(
+      "exercise-03 the bottom-left corner of the table is the bottom-left cell") {
+    const gas::TextScreen screen = grid();
+    INFO("y grows upwards on the table but rows grow downwards on the screen");
+    CHECK(screen.cell_of({0.5, 0.5}) == Cell{1, 5});
+    CHECK(screen.cell_of({0, 0}) == Cell{1, 5});
+  }
+
+  EXERCISE_TEST(
+      "exercise-03 columns count from x = 0 and rows from the top of the table") {
+    const gas::TextScreen screen = grid();
+    CHECK(screen.cell_of({3, 1}) == Cell{2, 5});         // x in [2, 4): column 2
+    CHECK(screen.cell_of({5, 9}) == Cell{3, 3});         // y in [8, 12): row 3
+    CHECK(screen.cell_of({19.5, 19.5}) == Cell{10, 1});  // the top-right cell
+    CHECK(screen.cell_of({11, 17}) == Cell{6, 1});
+  }
+
+  EXERCISE_TEST(
+      "exercise-03 a point on a cell's left or lower edge belongs to that cell") {
+    const gas::TextScreen screen = grid();
+    INFO("a cell holds its left and lower edges: column k holds 2(k-1) <= x < 2k");
+    CHECK(screen.cell_of({4, 8}) == Cell{3, 3});
+    CHECK(screen.cell_of({2, 4}) == Cell{2, 4});
+    CHECK(screen.cell_of({18, 12}) == Cell{10, 2});
+  }
+
+  EXERCISE_TEST(
+      "exercise-03 points on the far walls or beyond them stay inside the border") {
+    const gas::TextScreen screen = grid();
+    INFO("clamp the column to 1..columns-2 and the row to 1..rows-2");
+    // The top-right corner of the table lies on the border's lines.
+    CHECK(screen.cell_of({20, 20}) == Cell{10, 1});
+    CHECK(screen.cell_of({20, 0}) == Cell{10, 5});
+    // Beyond the table (round-off, or a ball's image near a wall).
+    CHECK(screen.cell_of({25, -3}) == Cell{10, 5});
+    CHECK(screen.cell_of({-1, 30}) == Cell{1, 1});
+    CHECK(screen.cell_of({-0.5, 10}) == Cell{1, 3});
+  }
+
+  EXERCISE_TEST("exercise-03 the middle of every cell lies in that cell") {
+    const gas::TextScreen screen = grid();
+    // middle_of (stage 3, beside cell_of) goes the other way: from a cell to
+    // the point at its middle.
+    for (int row = 1; row <= 5; ++row) {
+      for (int column = 1; column <= 10; ++column) {
+        const Cell cell{column, row};
+        CAPTURE(cell);
+        CHECK(screen.cell_of(screen.middle_of(cell)) == cell);
+      }
+    }
+  }
+}

@@ -1,0 +1,134 @@
+// Exercise 10, press_key: the provided tests (suite exercise-10).
+//
+// Every test here fails against the untouched stub (CI checks that) and
+// passes against stages/stage7_control.cpp. Don't change this file to make a
+// test pass: change your press_key.cpp.
+//
+// The loop's state is a Control (stage 7), set up by start_control from a
+// gas of three balls at T = 2, T0 = 1. The numbers are exact in binary.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "exercise_test.hpp"
+#include "stage7_control.hpp"
+
+namespace {
+
+using gas::Control;
+using gas::KeyEffect;
+
+Control three_balls() {
+  return gas::start_control(gas::exercises::table(
+      {{10, 10, 1, 0.5, 0}, {20, 15, -0.25, 1, 1.5}, {30, 5, 0, -2, 2}}, 2));
+}
+
+// KeyEffect as a number, for doctest to print: 0 none, 1 redraw, 2 end.
+int effect(Control& control, char key) {
+  return static_cast<int>(gas::press_key(control, key));
+}
+constexpr int none = static_cast<int>(KeyEffect::none);
+constexpr int redraw = static_cast<int>(KeyEffect::redraw);
+constexpr int end = static_cast<int>(KeyEffect::end);
+
+}  // namespace
+
+TEST_SUITE("exercise-10") {
+  EXERCISE_TEST("exercise-10 S stops the model and R runs it again") {
+    Control control = three_balls();
+    CHECK(effect(control, 'S') == none);
+    CHECK(control.stopped);
+    CHECK(effect(control, 'R') == none);
+    CHECK_FALSE(control.stopped);
+  }
+
+  EXERCISE_TEST("exercise-10 > doubles T0 and < halves it") {
+    Control control = three_balls();
+    CHECK(effect(control, '>') == none);
+    CHECK(control.gas.display_step == 2);
+    gas::press_key(control, '>');
+    CHECK(control.gas.display_step == 4);
+    gas::press_key(control, '<');
+    gas::press_key(control, '<');
+    gas::press_key(control, '<');
+    CHECK(control.gas.display_step == 0.5);
+    INFO("T0 only decides where the pictures are taken: the clock T stays where it is");
+    CHECK(control.gas.time == 2);
+  }
+
+  EXERCISE_TEST(
+      "exercise-10 B reverses every velocity at the present time and changes the tone") {
+    Control control = three_balls();
+    control.must_find_collision = false;
+    const std::vector<gas::Ball> before = control.gas.balls;
+    const std::vector<gas::Point> centres = gas::centres_at(control.gas, 2);
+    CHECK(effect(control, 'B') == none);
+    for (std::size_t i = 0; i < before.size(); ++i) {
+      CAPTURE(i + 1);  // the ball's number
+      CHECK(control.gas.balls[i].vx == -before[i].vx);
+      CHECK(control.gas.balls[i].vy == -before[i].vy);
+    }
+    INFO(
+        "the balls must still be where they are now: reverse them at T "
+        "(reverse_velocities)");
+    const std::vector<gas::Point> after = gas::centres_at(control.gas, 2);
+    for (std::size_t i = 0; i < before.size(); ++i) {
+      CAPTURE(i + 1);
+      CHECK(after[i].x == centres[i].x);
+      CHECK(after[i].y == centres[i].y);
+    }
+    CHECK(control.tone == 1);
+    INFO("every future collision changes: stage 4 must run again");
+    CHECK(control.must_find_collision);
+    gas::press_key(control, 'B');
+    CHECK(control.tone == 0);
+    CHECK(control.gas.balls[0].vx == before[0].vx);
+  }
+
+  EXERCISE_TEST("exercise-10 0 asks for a redraw and E ends") {
+    Control control = three_balls();
+    CHECK(effect(control, '0') == redraw);
+    CHECK_FALSE(control.ended);
+    CHECK(effect(control, 'E') == end);
+    CHECK(control.ended);
+  }
+
+  EXERCISE_TEST("exercise-10 keys work in lower case and other keys do nothing") {
+    Control control = three_balls();
+    gas::press_key(control, 's');
+    CHECK(control.stopped);
+    gas::press_key(control, 'r');
+    CHECK_FALSE(control.stopped);
+    CHECK(effect(control, 'e') == end);
+    Control quiet = three_balls();
+    for (const char key : {'.', 'x', ' ', '1', '\n'}) {
+      CAPTURE(key);
+      CHECK(effect(quiet, key) == none);
+    }
+    CHECK(quiet.gas.display_step == 1);
+    CHECK(quiet.gas.balls[2].vy == -2);
+    CHECK(quiet.tone == 0);
+    CHECK_FALSE(quiet.stopped);
+    CHECK_FALSE(quiet.ended);
+  }
+
+  EXERCISE_TEST("exercise-10 T0 stays a positive finite number that still moves T") {
+    Control control = three_balls();
+    for (int press = 0; press < 2000; ++press) gas::press_key(control, '>');
+    INFO("doubled 2000 times a double overflows to infinity: stop doubling before that");
+    CHECK(std::isfinite(control.gas.display_step));
+    CHECK(control.gas.display_step > 1e300);
+    control.gas.display_step = 1;
+    control.gas.time = 1000;
+    for (int press = 0; press < 2000; ++press) gas::press_key(control, '<');
+    INFO(
+        "halved 2000 times T0 would reach 0, or become so small that T + T0 == T: "
+        "stop halving before that");
+    CHECK(control.gas.display_step > 0);
+    CHECK(control.gas.time + control.gas.display_step > control.gas.time);
+    CHECK(control.gas.display_step < 1e-10);
+  }
+}

@@ -1,0 +1,88 @@
+// The benchmark (tests/benchmark/gas_benchmark.cpp) still runs and still
+// writes every part of its report. Not a measurement: `gas-benchmark --smoke`
+// runs each section at tiny sizes, in seconds, into a scratch folder; this
+// test checks the report's sections, its description of the machine and the
+// build, and the CSV files beside it. (The real report is made by hand, in
+// minutes: README.md, "Speed against error".)
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using gas::testing::read_file;
+
+// The lines of a CSV file.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    lines.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return lines;
+}
+
+}  // namespace
+
+TEST_SUITE("benchmark") {
+  TEST_CASE(
+      "gas-benchmark --smoke writes a report with every section and its CSV files") {
+    const fs::path out = fs::temp_directory_path() /
+                         fmt::format("gas-benchmark-test-{}-{}", getpid(), std::rand());
+    const std::string command = fmt::format(
+        "'{}' --smoke --out '{}' 2>'{}'", GAS_BENCHMARK, out.string(),
+        (fs::temp_directory_path() / fmt::format("gas-benchmark-test-{}.err", getpid()))
+            .string());
+    const int status = std::system(command.c_str());
+    REQUIRE_MESSAGE(status == 0, "gas-benchmark --smoke failed: " << command);
+
+    const std::string report = read_file((out / "speed-against-error.md").string());
+    for (const char* heading :
+         {"# Speed against error\n", "\n## Targets\n", "\n## 1. Throughput\n",
+          "\n## 2. Accuracy against cost for the number type\n",
+          "\n## 3. Time reversal\n", "\n## 4. What an event-driven program buys\n"}) {
+      CHECK_MESSAGE(report.find(heading) != std::string::npos, "no heading " << heading);
+    }
+    // The machine and the build are described.
+    for (const char* row : {"| CPU |", "| compiler |", "| build type |", "| flags |"})
+      CHECK_MESSAGE(report.find(row) != std::string::npos, "no row " << row);
+    // The three targets are each judged.
+    std::size_t judged = 0;
+    for (std::size_t at = report.find("met**"); at != std::string::npos;
+         at = report.find("met**", at + 1))
+      ++judged;
+    CHECK(judged == 3);
+    // Each section's numbers: the tables have rows for every way and type.
+    for (const char* cell :
+         {"| float |", "| double |", "| long double |", "| __float128 |",
+          "| stages (double) |", "| time-stepped |", "| event-driven |"})
+      CHECK_MESSAGE(report.find(cell) != std::string::npos, "no row with " << cell);
+
+    // Every CSV file: its header and at least one row, every row as many
+    // fields as the header.
+    for (const char* name :
+         {"throughput.csv", "default-scene.csv", "number-types.csv",
+          "number-types-distance.csv", "time-reversal.csv", "time-stepping.csv"}) {
+      CAPTURE(name);
+      const std::vector<std::string> lines = lines_of(read_file((out / name).string()));
+      REQUIRE(lines.size() >= 2);
+      const auto fields = [](const std::string& line) {
+        return std::count(line.begin(), line.end(), ',');
+      };
+      for (const std::string& line : lines) CHECK(fields(line) == fields(lines[0]));
+    }
+    fs::remove_all(out);
+  }
+}
