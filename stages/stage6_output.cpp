@@ -209,7 +209,7 @@ void draw_figures(TextScreen& screen, const Figures& f) {
       fmt::format("T {:.6f}  T0 {:g}  collisions {} (walls {}, balls {})", f.time,
                   f.display_step, f.wall_collisions + f.ball_collisions,
                   f.wall_collisions, f.ball_collisions),
-      fmt::format("N {}  area fraction {:.4f}  kT=E/N {:.5g}  drift {:+.1e}  p ({:.3g}, {:.3g})",
+      fmt::format("N {}  eta {:.4f}  kT {:.5g}  drift {:+.1e}  momentum ({:.2g}, {:.2g})",
                   f.balls, t.area_fraction, t.kT, f.energy_drift, f.momentum.x,
                   f.momentum.y),
       fmt::format("{:<16}{:<10}{:<22}{}", "", "now", "average +- error", "theory"),
