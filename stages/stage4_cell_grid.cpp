@@ -1,4 +1,4 @@
-// Stage 4 — first collision, by a grid of cells and a queue of events. See
+// Stage 4 — first collision, by a grid of cells and a calendar of events. See
 // stage4_cell_grid.hpp.
 #include "stage4_cell_grid.hpp"
 
@@ -27,7 +27,60 @@ constexpr std::uint64_t scan_event = std::uint64_t{1} << 63;
 
 }  // namespace
 
-// The place of a ball's prediction in the queue's order at equal times:
+// ---- a ball's list of predictions: the record's first few, then the rest
+
+CellGrid::Prediction& CellGrid::prediction(int ball, std::uint32_t i) {
+  if (i < predictions_kept) return record(ball).first[i];
+  return more_predictions_[static_cast<std::size_t>(ball)][i - predictions_kept];
+}
+
+void CellGrid::add(int ball, const Prediction& p) {
+  Record& r = record(ball);
+  if (r.listed < predictions_kept) {
+    r.first[r.listed] = p;
+  } else {
+    more_predictions_[static_cast<std::size_t>(ball)].push_back(p);
+  }
+  ++r.listed;
+}
+
+// Drops the predictions for which `dropped` says so; the others close up.
+template <typename Dropped>
+void CellGrid::drop(int ball, Dropped dropped) {
+  const std::uint32_t listed = record(ball).listed;
+  std::uint32_t kept = 0;
+  for (std::uint32_t i = 0; i < listed; ++i) {
+    const Prediction p = prediction(ball, i);
+    if (!dropped(p)) prediction(ball, kept++) = p;
+  }
+  record(ball).listed = kept;
+  if (listed > predictions_kept)
+    more_predictions_[static_cast<std::size_t>(ball)].resize(
+        kept > predictions_kept ? kept - predictions_kept : 0);
+}
+
+// The whole list dropped.
+void CellGrid::forget(int ball) {
+  if (record(ball).listed > predictions_kept)
+    more_predictions_[static_cast<std::size_t>(ball)].clear();
+  record(ball).listed = 0;
+}
+
+// The ball's key: the earliest of its list, or `never`.
+CellGrid::Prediction CellGrid::key(int ball) const {
+  const Record& r = record(ball);
+  return r.listed > 0 ? r.first[0] : Prediction{};
+}
+
+std::uint32_t CellGrid::longest_list() const {
+  std::uint32_t longest = 0;
+  for (const Record& r : records_) longest = std::max(longest, r.listed);
+  return longest;
+}
+
+// ---- the order of events, and which predictions still hold
+
+// The place of a ball's prediction in the calendar's order at equal times:
 // crossings first (they change no row of R, only the grid's books, and may
 // bring in a prediction that belongs before the collisions at that time),
 // then the events of the scan in the scan's order.
@@ -47,102 +100,76 @@ std::uint64_t CellGrid::place(int ball, const Prediction& p) const {
   }
 }
 
-// The heap's order: time, then the place in the scan (rarely needed).
-inline bool CellGrid::before(const Entry& a, const Entry& b) const {
-  if (a.time != b.time) return a.time < b.time;
-  return place(a.ball, earliest_[static_cast<std::size_t>(a.ball)]) <
-         place(b.ball, earliest_[static_cast<std::size_t>(b.ball)]);
-}
-
 // Made when the partner had the collisions it still has? (A ball's own
 // events are dropped with its list when it collides.)
 inline bool CellGrid::current(const Prediction& p) const {
   return p.partner <= 0 || count_[static_cast<std::size_t>(p.partner)] == p.partner_count;
 }
 
-void CellGrid::sift_up(std::size_t position) {
-  const Entry entry = heap_[position];
-  while (position > 0) {
-    const std::size_t parent = (position - 1) / 2;
-    if (!before(entry, heap_[parent])) break;
-    heap_[position] = heap_[parent];
-    position_[static_cast<std::size_t>(heap_[position].ball)] = position;
-    position = parent;
-  }
-  heap_[position] = entry;
-  position_[static_cast<std::size_t>(entry.ball)] = position;
+// ---- the cells' lists of balls
+
+void CellGrid::insert(int ball, int column, int line) {
+  Record& r = record(ball);
+  std::int32_t& first = head(column, line);
+  r.column = column;
+  r.line = line;
+  next_in_cell_[static_cast<std::size_t>(ball)] = first;
+  first = ball;
 }
 
-void CellGrid::sift_down(std::size_t position) {
-  const Entry entry = heap_[position];
-  const std::size_t size = heap_.size();
-  while (true) {
-    std::size_t child = 2 * position + 1;
-    if (child >= size) break;
-    if (child + 1 < size && before(heap_[child + 1], heap_[child])) ++child;
-    if (!before(heap_[child], entry)) break;
-    heap_[position] = heap_[child];
-    position_[static_cast<std::size_t>(heap_[position].ball)] = position;
-    position = child;
-  }
-  heap_[position] = entry;
-  position_[static_cast<std::size_t>(entry.ball)] = position;
-}
-
-void CellGrid::insert(int ball, int column, int row) {
-  const auto b = static_cast<std::size_t>(ball);
-  const auto cell = static_cast<std::size_t>(row * columns_ + column);
-  column_[b] = column;
-  row_[b] = row;
-  previous_in_cell_[b] = 0;
-  next_in_cell_[b] = head_[cell];
-  if (head_[cell] != 0) previous_in_cell_[static_cast<std::size_t>(head_[cell])] = ball;
-  head_[cell] = ball;
-}
-
+// (A cell holds a ball or two: its list is walked to find the one before.)
 void CellGrid::remove(int ball) {
-  const auto b = static_cast<std::size_t>(ball);
-  const auto cell = static_cast<std::size_t>(row_[b] * columns_ + column_[b]);
-  const int before_it = previous_in_cell_[b], after_it = next_in_cell_[b];
-  if (before_it != 0) {
-    next_in_cell_[static_cast<std::size_t>(before_it)] = after_it;
-  } else {
-    head_[cell] = after_it;
-  }
-  if (after_it != 0) previous_in_cell_[static_cast<std::size_t>(after_it)] = before_it;
+  std::int32_t* link = &head(record(ball).column, record(ball).line);
+  while (*link != ball) link = &next_in_cell_[static_cast<std::size_t>(*link)];
+  *link = next_in_cell_[static_cast<std::size_t>(ball)];
 }
 
-void CellGrid::add_wall(const Gas& gas, int ball, std::int32_t wall) {
-  const double time = wall_time(gas, limits_, ball,
+// The balls of a block of cells, `across` cells by `down` from the cell
+// (column, line), one after another: each(k) for ball k. (The frame of empty
+// cells around the table lets the block reach one cell beyond an edge.)
+template <typename Each>
+void CellGrid::for_each_ball(int column, int line, int across, int down,
+                             Each each) const {
+  for (int l = line; l < line + down; ++l) {
+    const std::int32_t* cells = &head_[cell_index(column, l)];
+    for (int c = 0; c < across; ++c)
+      for (int k = cells[c]; k != 0; k = next_in_cell_[static_cast<std::size_t>(k)])
+        each(k);
+  }
+}
+
+// ---- predictions
+
+void CellGrid::add_wall(int ball, std::int32_t wall) {
+  const double time = wall_time(row(ball), limits_,
                                 wall == horizontal_wall ? CollisionKind::horizontal_wall
                                                         : CollisionKind::vertical_wall);
-  if (time < never)
-    predictions_[static_cast<std::size_t>(ball)].push_back({time, wall, 0});
+  if (time < never) add(ball, {time, wall, 0});
 }
 
-void CellGrid::add_pair(const Gas& gas, int ball, int other) {
-  const double time = pair_time(gas, std::min(ball, other), std::max(ball, other));
-  if (time < never) {
-    predictions_[static_cast<std::size_t>(ball)].push_back(
-        {time, other, count_[static_cast<std::size_t>(other)]});
-  }
+// A meeting, computed as the scan computes it: time_of_contact(N3, N4) with
+// N3 < N4.
+void CellGrid::add_pair(int ball, int other) {
+  const double time =
+      time_of_contact(row(std::min(ball, other)), row(std::max(ball, other)), diameter_);
+  if (time < never) add(ball, {time, other, count_[static_cast<std::size_t>(other)]});
 }
 
 // The next time the centre leaves its cell: through the side ahead of it in
 // x or in y, whichever comes first (none at the table's edge: the wall comes
 // before).
-CellGrid::Prediction CellGrid::next_crossing(const Gas& gas, int ball) const {
-  const auto b = static_cast<std::size_t>(ball);
-  const Ball& row = gas.balls[b - 1];
+CellGrid::Prediction CellGrid::next_crossing(int ball) const {
+  const Record& r = record(ball);
+  const Ball& row = this->row(ball);
   double across = never, down = never;
-  if (row.vx > 0 && column_[b] < columns_ - 1)
-    across = row.since + ((column_[b] + 1) * cell_width_ - row.x) / row.vx;
-  if (row.vx < 0 && column_[b] > 0)
-    across = row.since + (column_[b] * cell_width_ - row.x) / row.vx;
-  if (row.vy > 0 && row_[b] < rows_ - 1)
-    down = row.since + ((row_[b] + 1) * cell_height_ - row.y) / row.vy;
-  if (row.vy < 0 && row_[b] > 0)
-    down = row.since + (row_[b] * cell_height_ - row.y) / row.vy;
+  if (row.vx > 0 && r.column < columns_ - 1)
+    across = row.since + ((r.column + 1) * cell_width_ - row.x) / row.vx;
+  if (row.vx < 0 && r.column > 0)
+    across = row.since + (r.column * cell_width_ - row.x) / row.vx;
+  if (row.vy > 0 && r.line < rows_ - 1)
+    down = row.since + ((r.line + 1) * cell_height_ - row.y) / row.vy;
+  if (row.vy < 0 && r.line > 0)
+    down = row.since + (r.line * cell_height_ - row.y) / row.vy;
   if (across <= down) return {across, cross_x, 0};
   return {down, cross_y, 0};
 }
@@ -150,94 +177,83 @@ CellGrid::Prediction CellGrid::next_crossing(const Gas& gas, int ball) const {
 // A ball's list made afresh (its row of R is new): the walls along its cell's
 // edges that it moves towards, the balls of the 3 x 3 cells around it (but
 // `skip`, and only those numbered from `lowest`), its next crossing.
-void CellGrid::predict(const Gas& gas, int ball, int skip, int lowest) {
-  const auto b = static_cast<std::size_t>(ball);
-  predictions_[b].clear();
-  const Ball& row = gas.balls[b - 1];
-  const int column = column_[b], line = row_[b];
+void CellGrid::predict(int ball, int skip, int lowest) {
+  forget(ball);
+  const Record& r = record(ball);
+  const int column = r.column, line = r.line;
+  const Ball& row = this->row(ball);
   if ((row.vy > 0 && line == rows_ - 1) || (row.vy < 0 && line == 0))
-    add_wall(gas, ball, horizontal_wall);
+    add_wall(ball, horizontal_wall);
   if ((row.vx > 0 && column == columns_ - 1) || (row.vx < 0 && column == 0))
-    add_wall(gas, ball, vertical_wall);
-  for (int r = std::max(0, line - 1); r <= std::min(rows_ - 1, line + 1); ++r) {
-    for (int c = std::max(0, column - 1); c <= std::min(columns_ - 1, column + 1); ++c) {
-      for (int k = head_[static_cast<std::size_t>(r * columns_ + c)]; k != 0;
-           k = next_in_cell_[static_cast<std::size_t>(k)]) {
-        if (k != ball && k != skip && k >= lowest) add_pair(gas, ball, k);
-      }
-    }
-  }
-  const Prediction crossing = next_crossing(gas, ball);
-  if (crossing.time < never) predictions_[b].push_back(crossing);
+    add_wall(ball, vertical_wall);
+  for_each_ball(column - 1, line - 1, 3, 3, [&](int k) {
+    if (k >= lowest && k != ball && k != skip) add_pair(ball, k);
+  });
+  const Prediction crossing = next_crossing(ball);
+  if (crossing.time < never) add(ball, crossing);
 }
 
-// The ball's key: the earliest current prediction of its list (the others,
-// out of date, are dropped on the way).
+// The ball's key: the earliest current prediction of its list, moved to the
+// front (the others, out of date, are dropped on the way).
 void CellGrid::choose_earliest(int ball) {
-  const auto b = static_cast<std::size_t>(ball);
-  std::vector<Prediction>& list = predictions_[b];
-  std::erase_if(list, [&](const Prediction& p) { return !current(p); });
-  Prediction earliest;
-  for (const Prediction& p : list) {
-    if (p.time < earliest.time ||
-        (p.time == earliest.time && place(ball, p) < place(ball, earliest)))
-      earliest = p;
+  drop(ball, [&](const Prediction& p) { return !current(p); });
+  const std::uint32_t listed = record(ball).listed;
+  std::uint32_t earliest = 0;
+  for (std::uint32_t i = 1; i < listed; ++i) {
+    const Prediction& p = prediction(ball, i);
+    const Prediction& e = prediction(ball, earliest);
+    if (p.time < e.time || (p.time == e.time && place(ball, p) < place(ball, e)))
+      earliest = i;
   }
-  earliest_[b] = earliest;
+  if (earliest != 0) std::swap(prediction(ball, 0), prediction(ball, earliest));
 }
 
-// The same, and the ball's entry moved to its place in the heap.
+// The same, and the ball's key moved to its day in the calendar.
 void CellGrid::refresh(int ball) {
   choose_earliest(ball);
-  const std::size_t position = position_[static_cast<std::size_t>(ball)];
-  heap_[position].time = earliest_[static_cast<std::size_t>(ball)].time;
-  if (position > 0 && before(heap_[position], heap_[(position - 1) / 2])) {
-    sift_up(position);
-  } else {
-    sift_down(position);
-  }
+  const Prediction earliest = key(ball);
+  calendar_.schedule(ball, earliest.time, place(ball, earliest));
 }
 
 // A crossing: the ball moves to the next cell in the books, is predicted
 // against the balls of the cells that have just become its neighbours, learns
 // of the wall if the new cell lies along it, and gets its next crossing.
-void CellGrid::cross(const Gas& gas, int ball, bool along_x) {
-  const auto b = static_cast<std::size_t>(ball);
-  const Ball& row = gas.balls[b - 1];
-  const int step = (along_x ? row.vx : row.vy) > 0 ? 1 : -1;
-  const int column = column_[b] + (along_x ? step : 0);
-  const int line = row_[b] + (along_x ? 0 : step);
+void CellGrid::cross(int ball, bool along_x) {
+  const Record& r = record(ball);
+  const int step = (along_x ? row(ball).vx : row(ball).vy) > 0 ? 1 : -1;
+  const int column = r.column + (along_x ? step : 0);
+  const int line = r.line + (along_x ? 0 : step);
   remove(ball);
   insert(ball, column, line);
-  std::vector<Prediction>& list = predictions_[b];
-  std::erase_if(list, [](const Prediction& p) {
-    return p.partner == cross_x || p.partner == cross_y;
-  });
+  drop(ball,
+       [](const Prediction& p) { return p.partner == cross_x || p.partner == cross_y; });
   // The new neighbours: the column (or row of cells) one further on.
-  for (int i = -1; i <= 1; ++i) {
-    const int c = along_x ? column + step : column + i;
-    const int r = along_x ? line + i : line + step;
-    if (c < 0 || c >= columns_ || r < 0 || r >= rows_) continue;
-    for (int k = head_[static_cast<std::size_t>(r * columns_ + c)]; k != 0;
-         k = next_in_cell_[static_cast<std::size_t>(k)]) {
-      add_pair(gas, ball, k);
+  const auto new_neighbours = [&](auto each) {
+    if (along_x) {
+      for_each_ball(column + step, line - 1, 1, 3, each);
+    } else {
+      for_each_ball(column - 1, line + step, 3, 1, each);
     }
-  }
+  };
+  new_neighbours([&](int k) { add_pair(ball, k); });
   if (along_x && (step > 0 ? column == columns_ - 1 : column == 0))
-    add_wall(gas, ball, vertical_wall);
+    add_wall(ball, vertical_wall);
   if (!along_x && (step > 0 ? line == rows_ - 1 : line == 0))
-    add_wall(gas, ball, horizontal_wall);
-  const Prediction crossing = next_crossing(gas, ball);
-  if (crossing.time < never) list.push_back(crossing);
+    add_wall(ball, horizontal_wall);
+  const Prediction crossing = next_crossing(ball);
+  if (crossing.time < never) add(ball, crossing);
   refresh(ball);
 }
 
+// ---- the three calls
+
 void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   limits_ = limits;
+  diameter_ = 2 * gas.radius;
   const auto n = gas.balls.size();
   // Cells at least 2a (1 + margin) wide, and not many more cells than balls
   // (a huge table with a few balls needs few cells).
-  const double smallest = 2 * gas.radius * (1 + margin);
+  const double smallest = diameter_ * (1 + margin);
   const double most = 4.0 * static_cast<double>(n) + 16;
   double columns = std::min(cells_along(gas.width, smallest), most);
   double rows = std::min(cells_along(gas.height, smallest), most);
@@ -251,43 +267,37 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   cell_width_ = gas.width / columns_;
   cell_height_ = gas.height / rows_;
 
-  predictions_.assign(n + 1, {});
-  earliest_.assign(n + 1, Prediction{});
+  records_.assign(n + 1, Record{});
+  more_predictions_.assign(n + 1, {});
   count_.assign(n + 1, 0);
-  position_.assign(n + 1, 0);
-  column_.assign(n + 1, 0);
-  row_.assign(n + 1, 0);
   next_in_cell_.assign(n + 1, 0);
-  previous_in_cell_.assign(n + 1, 0);
-  head_.assign(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_), 0);
+  head_.assign(
+      static_cast<std::size_t>(columns_ + 2) * static_cast<std::size_t>(rows_ + 2), 0);
+  balls_ = gas.balls.data();
   const int count = static_cast<int>(n);
   for (int ball = 1; ball <= count; ++ball) {
-    const Point centre =
-        centre_at(gas.balls[static_cast<std::size_t>(ball - 1)], gas.time);
+    const Point centre = centre_at(row(ball), gas.time);
     insert(ball, cell_of(centre.x, cell_width_, columns_),
            cell_of(centre.y, cell_height_, rows_));
   }
   // Each pair once, in the list of its lower-numbered ball.
-  heap_.clear();
+  calendar_.reset(n);
   for (int ball = 1; ball <= count; ++ball) {
-    predict(gas, ball, 0, ball + 1);
-    choose_earliest(ball);
-    heap_.push_back({earliest_[static_cast<std::size_t>(ball)].time, ball});
-    position_[static_cast<std::size_t>(ball)] = heap_.size() - 1;
+    predict(ball, 0, ball + 1);
+    refresh(ball);
   }
-  for (std::size_t position = heap_.size() / 2; position-- > 0;) sift_down(position);
 }
 
 // [anchor: grid-first]
 Collision CellGrid::first(const Gas& gas) {
-  while (!heap_.empty()) {
-    const int ball = heap_.front().ball;
-    const Prediction p = earliest_[static_cast<std::size_t>(ball)];
-    if (!(p.time < never)) break;  // nothing will ever collide
-    if (!current(p)) {             // its partner has collided since: dropped
+  balls_ = gas.balls.data();
+  // The ball whose next event is the earliest; none: nothing will ever collide.
+  for (int ball = calendar_.earliest(); ball != 0; ball = calendar_.earliest()) {
+    const Prediction p = key(ball);
+    if (!current(p)) {  // its partner has collided since: dropped
       refresh(ball);
     } else if (p.partner == cross_x || p.partner == cross_y) {
-      cross(gas, ball, p.partner == cross_x);
+      cross(ball, p.partner == cross_x);
     } else if (p.partner > 0) {
       return due_from({p.time, CollisionKind::balls, std::min(ball, p.partner),
                        std::max(ball, p.partner)},
@@ -307,12 +317,15 @@ Collision CellGrid::first(const Gas& gas) {
 void CellGrid::update(const Gas& gas, const Collision& done) {
   if (done.kind == CollisionKind::none) return;
   const bool pair = done.kind == CollisionKind::balls;
-  ++count_[static_cast<std::size_t>(done.first)];  // predictions of meetings with
-  if (pair) ++count_[static_cast<std::size_t>(done.second)];  // them: out of date
-  predict(gas, done.first, 0, 1);
+  balls_ = gas.balls.data();
+  // The collision counted: predictions of meetings with these balls are out
+  // of date.
+  ++count_[static_cast<std::size_t>(done.first)];
+  if (pair) ++count_[static_cast<std::size_t>(done.second)];
+  predict(done.first, 0, 1);
   refresh(done.first);
   if (pair) {
-    predict(gas, done.second, done.first, 1);  // the pair itself is in N1's list
+    predict(done.second, done.first, 1);  // the pair itself is in N1's list
     refresh(done.second);
   }
 }

@@ -1,4 +1,4 @@
-// Stage 4 — first collision, by a grid of cells and a queue of events
+// Stage 4 — first collision, by a grid of cells and a calendar of events
 // (beyond the article).
 //
 // What this file does: cuts the table into cells at least 2a wide and keeps
@@ -10,20 +10,28 @@
 // hears of a wall only in the cells along that wall.
 //
 // Each ball keeps a short list of its predictions (the walls ahead of it, its
-// next crossing, the meetings it predicted), and a priority queue — a binary
-// heap, earliest on top — holds every ball once, keyed by the earliest
+// next crossing, the meetings it predicted), and an event calendar
+// (stage4_event_calendar.*) holds every ball once, keyed by the earliest
 // prediction in its list. After a collision the lists of its balls are made
 // afresh. The other balls may still hold predictions of meetings with them,
 // now worthless; rather than hunt those down, every ball counts its
 // collisions, a prediction of a meeting remembers the count its partner had,
-// and a prediction whose count is out of date is dropped when it comes to the
-// top (lazy invalidation). The work per collision no longer grows with N,
-// but for the heap's log N.
+// and a prediction whose count is out of date is dropped when it comes up
+// (lazy invalidation). The work per collision does not grow with N.
+//
+// Where things live in memory matters as much as the work, once there are
+// more balls than the processor's caches hold (some 10^4): every event
+// happens somewhere else on the table, so what it needs comes from main
+// memory, a wait worth hundreds of arithmetic steps. So the grid keeps its
+// books small: a ball's cell and first predictions in one record of a cache
+// line, the collision counts and the cells' lists in arrays of 4-byte
+// numbers; the rows of R it reads from the gas.
+//
 // Beyond the article: the article scans every wall and every pair for each
 // collision. The answer here is the scan's, bit for bit, ties included: the
 // predictions are stage 4's time_to_wall and time_of_contact on the same rows
-// of R (a crossing never rewrites a row), and the queue is ordered as the
-// scan meets events (stage4_event_order.hpp), crossings first.
+// of R (a crossing never rewrites a row), and events are ordered as the scan
+// meets them (stage4_event_order.hpp), crossings first.
 // Lesson: lessons/10-scaling.md
 //
 // Assumptions: between two calls of `first`, the gas changes only by the
@@ -37,6 +45,7 @@
 
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
+#include "stage4_event_calendar.hpp"
 #include "stage4_first_collision.hpp"
 
 namespace gas {
@@ -60,13 +69,19 @@ class CellGrid {
   int rows() const { return rows_; }
   double cell_width() const { return cell_width_; }
   double cell_height() const { return cell_height_; }
-
+  // The longest list of predictions a ball holds now, for tests.
+  std::uint32_t longest_list() const;
   // How much wider than 2a a cell is at least, as a fraction of 2a. Two balls
   // in cells that are not neighbours are then more than 2a (1 + margin)
   // apart; the margin is far above the rounding of any centre (~1e-16 of the
   // table's size, and of |v| T), so the grid's idea of which cell holds a
   // centre can never be wrong by enough to hide a collision.
   static constexpr double margin = 1.0 / 1024;
+
+  // How many predictions a record holds itself; a longer list (rare: a ball
+  // predicts a meeting only with the balls it approaches) goes on in
+  // `more_predictions_`.
+  static constexpr std::uint32_t predictions_kept = 3;
 
  private:
   // One prediction in a ball's list: a meeting with the ball `partner`
@@ -82,41 +97,64 @@ class CellGrid {
   static constexpr std::int32_t cross_x = -2;  // leaves its cell through a side x = const
   static constexpr std::int32_t cross_y = -3;  // ... through a side y = const
 
-  // An entry of the heap: a ball and the time of its earliest prediction.
-  struct Entry {
-    double time = never;
-    std::int32_t ball = 0;
+  // A ball as the grid keeps it: its cell and its list, in one cache line.
+  struct alignas(64) Record {
+    std::uint32_t listed = 0;            // the length of its list of predictions,
+    Prediction first[predictions_kept];  // ... the first of them (the
+                                         // earliest in first[0]: its key)
+    std::int32_t column = 0, line = 0;   // its cell
   };
+  static_assert(sizeof(Record) == 64, "a record is one cache line");
+
+  const Ball& row(int ball) const { return balls_[ball - 1]; }  // its row of R
+  Record& record(int ball) { return records_[static_cast<std::size_t>(ball)]; }
+  const Record& record(int ball) const {
+    return records_[static_cast<std::size_t>(ball)];
+  }
+  // Cells are numbered row by row in a frame one cell wider on every side.
+  std::size_t cell_index(int column, int line) const {
+    return static_cast<std::size_t>(line + 1) * static_cast<std::size_t>(columns_ + 2) +
+           static_cast<std::size_t>(column + 1);
+  }
+  std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
+
+  // A ball's list of predictions.
+  Prediction& prediction(int ball, std::uint32_t i);
+  void add(int ball, const Prediction& p);
+  template <typename Dropped>
+  void drop(int ball, Dropped dropped);
+  void forget(int ball);
+  Prediction key(int ball) const;
 
   std::uint64_t place(int ball, const Prediction& p) const;
-  bool before(const Entry& a, const Entry& b) const;
   bool current(const Prediction& p) const;
 
-  void predict(const Gas& gas, int ball, int skip, int lowest);
-  void add_pair(const Gas& gas, int ball, int other);
-  void add_wall(const Gas& gas, int ball, std::int32_t wall);
-  Prediction next_crossing(const Gas& gas, int ball) const;
-  void cross(const Gas& gas, int ball, bool along_x);
+  void predict(int ball, int skip, int lowest);
+  void add_pair(int ball, int other);
+  void add_wall(int ball, std::int32_t wall);
+  Prediction next_crossing(int ball) const;
+  void cross(int ball, bool along_x);
   void choose_earliest(int ball);
   void refresh(int ball);
-  void sift_up(std::size_t position);
-  void sift_down(std::size_t position);
-  void insert(int ball, int column, int row);
+  void insert(int ball, int column, int line);
   void remove(int ball);
+  template <typename Each>
+  void for_each_ball(int column, int line, int across, int down, Each each) const;
 
   CentreLimits limits_;
+  double diameter_ = 0;  // 2a
   int columns_ = 1, rows_ = 1;
   double cell_width_ = 0, cell_height_ = 0;
-  // Per ball, indexed by its number 1..N (index 0 unused):
-  std::vector<std::vector<Prediction>> predictions_;  // its list
-  std::vector<Prediction> earliest_;                  // the earliest of its list: its key
-  std::vector<std::uint32_t> count_;   // its collisions so far (wraps after 2^32:
-                                       // harmless unless a prediction waits that long)
-  std::vector<std::size_t> position_;  // its entry in the heap
-  std::vector<int> column_, row_;      // its cell
-  std::vector<int> next_in_cell_, previous_in_cell_;  // the cell's list; 0 ends it
-  std::vector<int> head_;    // head_[row * columns + column]: a ball in the cell, or 0
-  std::vector<Entry> heap_;  // every ball once, the earliest key on top
+  const Ball* balls_ = nullptr;  // the gas's rows of R (as of the last call)
+  std::vector<Record> records_;  // by ball number 1..N (0 unused)
+  std::vector<std::vector<Prediction>> more_predictions_;  // by ball: its list
+                                                           // beyond the record's
+  std::vector<std::uint32_t> count_;        // by ball: its collisions so far (wraps
+                                            // after 2^32: harmless unless a
+                                            // prediction waits that long)
+  std::vector<std::int32_t> next_in_cell_;  // by ball: the next in its cell; 0 ends
+  std::vector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
+  EventCalendar calendar_;  // every ball with an event, keyed by the earliest
 };
 
 }  // namespace gas

@@ -42,6 +42,7 @@ double time_of_contact(const Ball& p, const Ball& q, double diameter) {
   const double dx = rq.x - rp.x, dy = rq.y - rp.y;  // d = r2 - r1
   const double wx = q.vx - p.vx, wy = q.vy - p.vy;  // w = v2 - v1
   const double b = dx * wx + dy * wy;               // d.w
+  if (b >= 0) return never;                         // moving apart, or side by side
   // The balls approach if d.w < 0 — by more than round-off: the velocities
   // are known to about epsilon times their size, and a d.w below that
   // floor is noise. (Two touching balls whose velocities differ in the last
@@ -50,7 +51,7 @@ double time_of_contact(const Ball& p, const Ball& q, double diameter) {
   const double noise =
       4 * std::numeric_limits<double>::epsilon() * (std::fabs(dx) + std::fabs(dy)) *
       (std::fabs(p.vx) + std::fabs(p.vy) + std::fabs(q.vx) + std::fabs(q.vy));
-  if (b >= -noise) return never;  // moving apart, or no relative motion worth the name
+  if (b >= -noise) return never;  // no relative motion worth the name
   const double c = dx * dx + dy * dy - diameter * diameter;
   if (c <= 0) return start;  // touching or overlapping: now
   const double ww = wx * wx + wy * wy;

@@ -56,7 +56,8 @@ TEST_SUITE("benchmark") {
       CHECK_MESSAGE(report.find(heading) != std::string::npos, "no heading " << heading);
     }
     // The machine and the build are described.
-    for (const char* row : {"| CPU |", "| compiler |", "| build type |", "| flags |"})
+    for (const char* row : {"| CPU |", "| compiler |", "| build type |", "| flags |",
+                            "| one read from memory, at random among"})
       CHECK_MESSAGE(report.find(row) != std::string::npos, "no row " << row);
     // The three targets are each judged.
     std::size_t judged = 0;

@@ -15,7 +15,8 @@
 //   written at different moments, each way gives find_first_collision's
 //   answer, also after an update.
 // - Whole runs through stage 7 (take_step): every scene in data/, lattices
-//   full of exact ties, random gases up to 1000 balls, with the B key and
+//   full of exact ties, random gases up to 20000 balls, a cluster whose
+//   lists outgrow the grid's records, with the B key and
 //   display steps that leave found collisions waiting.
 // - The grid's layout: cells at least 2a (1 + margin) wide, and not a cell
 //   per pixel of a huge, nearly empty table.
@@ -330,6 +331,30 @@ TEST_SUITE("strategies") {
     // 1000 balls: the table and the grid, 3x10^4 collisions (30 per ball).
     const Gas thousand = scene_text("a 1\nT0 1\nA1 102\nA2 102\nrandom 1000 12 1\n");
     CHECK(check_same_runs(thousand, 30000, {Strategy::table, Strategy::grid}) == 30000);
+  }
+
+  TEST_CASE("strategies: lists longer than a grid record holds and a gas of 20000") {
+    // 48 balls packed in a corner of a 1000 x 1000 table: the grid makes no
+    // more than 4 x 48 + 16 cells, ~70 wide, so all 48 start in one cell and
+    // each predicts meetings with dozens: lists outgrow the record.
+    Gas cluster;
+    cluster.radius = 1;
+    cluster.width = cluster.height = 1000;
+    cluster.display_step = 100;  // T0: the gas spreads out, collisions grow rare
+    std::mt19937_64 random(5);
+    for (int i = 0; i < 48; ++i) {
+      const double vx = static_cast<double>(static_cast<int>(random() % 9) - 4) / 4;
+      const double vy = static_cast<double>(static_cast<int>(random() % 9) - 4) / 4;
+      cluster.balls.push_back({2 + 2.5 * (i % 8), 2 + 2.5 * (i / 8), vx, vy, 0});
+    }
+    gas::CellGrid grid;
+    grid.rebuild(cluster, gas::centre_limits(cluster));
+    CHECK(grid.longest_list() > gas::CellGrid::predictions_kept);
+    CHECK(check_same_runs(cluster, 3000) == 3000);
+    // 20000 balls: more pages in the calendar than the lattices and the
+    // small gases use, and a calendar laid out from a random start.
+    const Gas big = scene_text("a 1\nT0 1\nA1 458\nA2 458\nrandom 20000 13 1\n");
+    CHECK(check_same_runs(big, 2000, {Strategy::table, Strategy::grid}) == 2000);
   }
 
   TEST_CASE(

@@ -1,0 +1,163 @@
+// Stage 4 — first collision: an event calendar. See stage4_event_calendar.hpp.
+#include "stage4_event_calendar.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "stage4_event_order.hpp"
+
+namespace gas {
+
+namespace {
+
+// Days beyond this are all one day (their keys are still compared exactly):
+// far enough that no run reaches it, small enough to be an exact double.
+constexpr double last_day = 0x1p62;
+
+// How much looking (balls compared on today's page, empty days turned) per
+// question the calendar puts up with before it lays itself out again with
+// days fitted to the keys it holds now. (Laid out well, it looks at about
+// three.)
+constexpr std::uint64_t looking_per_question = 16;
+
+}  // namespace
+
+void EventCalendar::reset(std::size_t count) {
+  entries_.assign(count + 1, Entry{});
+  places_.assign(count + 1, 0);
+  // About one page per ball: with days as long as below, most keys fall
+  // within a year, and a page holds few balls.
+  page_.assign(std::bit_ceil(std::max<std::size_t>(count, 16)), 0);
+  page_mask_ = page_.size() - 1;
+  on_calendar_ = 0;
+  laid_out_ = false;
+  layouts_ = 0;
+  day_length_ = 0;
+  today_ = 0;
+  questions_ = looked_ = 0;
+}
+
+// The day a key's time falls on: floor((time - start of day 0) x days per
+// unit of time), never before today. Every step keeps the order of the times
+// (a later time never gets an earlier day: rounded subtraction and
+// multiplication by a positive number are monotonic), so days sort keys as
+// their times do, and only keys of one day need comparing.
+std::int64_t EventCalendar::day_of(double time) const {
+  const double days = (time - first_day_starts_) * days_per_unit_;
+  if (!(days >= 0)) return today_;  // in the past: today
+  const auto day = static_cast<std::int64_t>(std::min(days, last_day));
+  return std::max(day, today_);
+}
+
+void EventCalendar::put_on_page(int ball) {
+  Entry& entry = entries_[static_cast<std::size_t>(ball)];
+  std::int32_t& first = page_[static_cast<std::uint64_t>(entry.day) & page_mask_];
+  entry.next = first;
+  first = ball;
+}
+
+// (A page holds a ball or two: its list is walked to find the one before.)
+void EventCalendar::take_off_page(int ball) {
+  const Entry& entry = entries_[static_cast<std::size_t>(ball)];
+  std::int32_t* link = &page_[static_cast<std::uint64_t>(entry.day) & page_mask_];
+  while (*link != ball) link = &entries_[static_cast<std::size_t>(*link)].next;
+  *link = entry.next;
+}
+
+void EventCalendar::schedule(int ball, double time, std::uint64_t place) {
+  Entry& entry = entries_[static_cast<std::size_t>(ball)];
+  if (entry.day != off) {
+    if (laid_out_) take_off_page(ball);
+    entry.day = off;
+    --on_calendar_;
+  }
+  entry.time = time;
+  places_[static_cast<std::size_t>(ball)] = place;
+  if (!(time < never)) return;
+  ++on_calendar_;
+  entry.day = laid_out_ ? day_of(time) : today_;
+  if (laid_out_) put_on_page(ball);
+}
+
+// Choose the days for the keys held now: day 0 starts at the earliest key,
+// and a day is three times the median wait beyond it divided by the number
+// of keys, so that about two balls fall on each of the first days.
+void EventCalendar::lay_out() {
+  double earliest_time = never;
+  for (const Entry& entry : entries_)
+    if (entry.day != off) earliest_time = std::min(earliest_time, entry.time);
+  // The median wait, not the mean: one ball whose next event is 10^70 time
+  // units away (a ball all but at rest) must not make every day that long.
+  waits_.clear();
+  for (const Entry& entry : entries_)
+    if (entry.day != off) waits_.push_back(entry.time - earliest_time);
+  const auto middle = waits_.begin() + static_cast<std::ptrdiff_t>(waits_.size() / 2);
+  std::nth_element(waits_.begin(), middle, waits_.end());
+  // (For waits spread as in a gas, roughly exponentially, the median is 0.7
+  // of the mean, and near today N keys fall about N / mean to a unit of time.)
+  day_length_ = 3 * *middle / static_cast<double>(waits_.size());
+  if (!(day_length_ > 0 && day_length_ < never)) day_length_ = 1;  // all at one time
+  days_per_unit_ = 1 / day_length_;
+  if (!(days_per_unit_ < never)) days_per_unit_ = 0x1p1000;  // days shorter than 1e-308
+  first_day_starts_ = earliest_time;
+  today_ = 0;
+  std::fill(page_.begin(), page_.end(), 0);
+  laid_out_ = true;
+  ++layouts_;
+  for (std::size_t ball = 1; ball < entries_.size(); ++ball) {
+    Entry& entry = entries_[ball];
+    if (entry.day == off) continue;
+    entry.day = day_of(entry.time);
+    put_on_page(static_cast<int>(ball));
+  }
+  questions_ = looked_ = 0;
+}
+
+// The smallest key among the balls whose day is today, or 0 if there is none
+// (the balls of later years on the same page are passed over).
+int EventCalendar::earliest_of_today() {
+  int best = 0;
+  for (std::int32_t ball = page_[static_cast<std::uint64_t>(today_) & page_mask_];
+       ball != 0;) {
+    const Entry& entry = entries_[static_cast<std::size_t>(ball)];
+    ++looked_;
+    if (entry.day == today_) {
+      if (best == 0 || entry.time < entries_[static_cast<std::size_t>(best)].time ||
+          (entry.time == entries_[static_cast<std::size_t>(best)].time &&
+           places_[static_cast<std::size_t>(ball)] <
+               places_[static_cast<std::size_t>(best)]))
+        best = ball;
+    }
+    ball = entry.next;
+  }
+  return best;
+}
+
+// [anchor: calendar-earliest]
+int EventCalendar::earliest() {
+  if (on_calendar_ == 0) return 0;
+  if (!laid_out_) lay_out();
+  // Now and then: are the days still the right length for the keys? (Too
+  // long, and today's page is crowded; too short, and most pages are empty.)
+  if (++questions_ >= 4 * page_.size()) {
+    if (looked_ > looking_per_question * questions_) lay_out();
+    questions_ = looked_ = 0;
+  }
+  // Turn the pages from today until a day has a ball on it. (After a year
+  // of empty days, lay the calendar out afresh: then the earliest key falls
+  // on day 0.)
+  for (std::size_t empty_days = 0;; ++empty_days) {
+    const int ball = earliest_of_today();
+    if (ball != 0) return ball;
+    if (empty_days == page_.size()) {
+      lay_out();
+    } else {
+      ++today_;
+      ++looked_;
+    }
+  }
+}
+// [/anchor: calendar-earliest]
+
+}  // namespace gas

@@ -1,0 +1,83 @@
+// Stage 4 — first collision: an event calendar, the cell grid's queue
+// (beyond the article).
+//
+// What this file does: holds one key per ball — the time of the ball's
+// earliest predicted event and its place in the article's scan — and gives
+// the ball with the smallest key. It is a calendar (R. Brown, "Calendar
+// queues", Comm. ACM 31, 1988): model time is cut into days of equal length,
+// and a page per day-of-the-year keeps the balls whose key falls on that day,
+// in this year or a later one. The next event is on the page of today: only
+// the few balls there are compared. Moving a key costs a few steps whatever
+// N is; a binary heap takes log2 N steps, each at a scattered place in
+// memory.
+// Beyond the article: the article scans every event anew. Ties are broken
+// exactly as the scan breaks them (stage4_event_order.hpp): a day is only a
+// coarse first sorting, the same for equal times, and the balls of a day are
+// compared by (time, place).
+// Lesson: lessons/10-scaling.md
+//
+// Assumptions: a key is never set earlier than the earliest key of the
+// calendar was when it was last asked (model time runs forward); a key set
+// earlier all the same (round-off can place an event a hair in the past)
+// counts as today's. At most 2^31 - 1 balls.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace gas {
+
+class EventCalendar {
+ public:
+  // Balls 1..count, none with an event yet.
+  void reset(std::size_t count);
+
+  // The key of `ball` becomes (time, place); a time of `never` (infinity)
+  // takes the ball off the calendar.
+  void schedule(int ball, double time, std::uint64_t place);
+
+  // The ball with the smallest key (time, then place), or 0 if no ball has
+  // an event.
+  int earliest();
+
+  // The length of a day, in model time, for tests and the benchmark (0 until
+  // the first call of `earliest` after `reset`).
+  double day_length() const { return day_length_; }
+  // How many times it was laid out since `reset` (for tests).
+  long long layouts() const { return layouts_; }
+
+ private:
+  // A ball's key and its place in the calendar: on the page `day % pages`,
+  // in a list of balls linked one way (0 ends it). The key's second part,
+  // the place in the scan, is needed only for a tie of times: it is kept
+  // apart (`places_`), so that an entry is small.
+  struct Entry {
+    double time = 0;         // its earliest event (model time)
+    std::int64_t day = off;  // the day it falls on (today if in the past)
+    std::int32_t next = 0;   // the next ball on its page
+  };
+  static constexpr std::int64_t off = -1;  // a `day` for: not on the calendar
+
+  std::int64_t day_of(double time) const;
+  void put_on_page(int ball);
+  void take_off_page(int ball);
+  void lay_out();
+  int earliest_of_today();
+
+  std::vector<Entry> entries_;         // by ball number 1..N (entry 0 unused)
+  std::vector<std::uint64_t> places_;  // by ball number: its key's place
+  std::vector<double> waits_;          // lay_out's scratch
+  std::vector<std::int32_t> page_;     // first ball on each page, or 0
+  std::uint64_t page_mask_ = 0;        // pages - 1 (pages is a power of two)
+  std::size_t on_calendar_ = 0;        // how many balls have an event
+  bool laid_out_ = false;              // are the days' length and start chosen?
+  double first_day_starts_ = 0;        // model time at which day 0 starts
+  double day_length_ = 0;              // in model time
+  double days_per_unit_ = 0;           // 1 / day_length_
+  long long layouts_ = 0;              // lay_out calls since reset
+  std::int64_t today_ = 0;             // the day of the earliest key
+  std::uint64_t questions_ = 0;        // calls of `earliest` since the last check
+  std::uint64_t looked_ = 0;           // balls of later years and empty days passed over
+};
+
+}  // namespace gas
