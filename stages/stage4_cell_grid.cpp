@@ -141,7 +141,7 @@ void CellGrid::for_each_ball(int column, int line, int across, int down,
 // ---- predictions
 
 void CellGrid::add_wall(int ball, std::int32_t wall) {
-  const double time = wall_time(row(ball), limits_,
+  const double time = wall_time(*gas_, limits_, ball,
                                 wall == horizontal_wall ? CollisionKind::horizontal_wall
                                                         : CollisionKind::vertical_wall);
   if (time < never) add(ball, {time, wall, 0});
@@ -150,8 +150,7 @@ void CellGrid::add_wall(int ball, std::int32_t wall) {
 // A meeting, computed as the scan computes it: time_of_contact(N3, N4) with
 // N3 < N4.
 void CellGrid::add_pair(int ball, int other) {
-  const double time =
-      time_of_contact(row(std::min(ball, other)), row(std::max(ball, other)), diameter_);
+  const double time = pair_time(*gas_, std::min(ball, other), std::max(ball, other));
   if (time < never) add(ball, {time, other, count_[static_cast<std::size_t>(other)]});
 }
 
@@ -249,11 +248,10 @@ void CellGrid::cross(int ball, bool along_x) {
 
 void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   limits_ = limits;
-  diameter_ = 2 * gas.radius;
   const auto n = gas.balls.size();
   // Cells at least 2a (1 + margin) wide, and not many more cells than balls
   // (a huge table with a few balls needs few cells).
-  const double smallest = diameter_ * (1 + margin);
+  const double smallest = 2 * gas.radius * (1 + margin);
   const double most = 4.0 * static_cast<double>(n) + 16;
   double columns = std::min(cells_along(gas.width, smallest), most);
   double rows = std::min(cells_along(gas.height, smallest), most);
@@ -273,7 +271,7 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   next_in_cell_.assign(n + 1, 0);
   head_.assign(
       static_cast<std::size_t>(columns_ + 2) * static_cast<std::size_t>(rows_ + 2), 0);
-  balls_ = gas.balls.data();
+  gas_ = &gas;
   const int count = static_cast<int>(n);
   for (int ball = 1; ball <= count; ++ball) {
     const Point centre = centre_at(row(ball), gas.time);
@@ -290,7 +288,7 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
 
 // [anchor: grid-first]
 Collision CellGrid::first(const Gas& gas) {
-  balls_ = gas.balls.data();
+  gas_ = &gas;
   // The ball whose next event is the earliest; none: nothing will ever collide.
   for (int ball = calendar_.earliest(); ball != 0; ball = calendar_.earliest()) {
     const Prediction p = key(ball);
@@ -317,7 +315,7 @@ Collision CellGrid::first(const Gas& gas) {
 void CellGrid::update(const Gas& gas, const Collision& done) {
   if (done.kind == CollisionKind::none) return;
   const bool pair = done.kind == CollisionKind::balls;
-  balls_ = gas.balls.data();
+  gas_ = &gas;
   // The collision counted: predictions of meetings with these balls are out
   // of date.
   ++count_[static_cast<std::size_t>(done.first)];

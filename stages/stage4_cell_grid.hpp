@@ -106,7 +106,9 @@ class CellGrid {
   };
   static_assert(sizeof(Record) == 64, "a record is one cache line");
 
-  const Ball& row(int ball) const { return balls_[ball - 1]; }  // its row of R
+  const Ball& row(int ball) const {  // its row of R
+    return gas_->balls[static_cast<std::size_t>(ball - 1)];
+  }
   Record& record(int ball) { return records_[static_cast<std::size_t>(ball)]; }
   const Record& record(int ball) const {
     return records_[static_cast<std::size_t>(ball)];
@@ -142,10 +144,9 @@ class CellGrid {
   void for_each_ball(int column, int line, int across, int down, Each each) const;
 
   CentreLimits limits_;
-  double diameter_ = 0;  // 2a
   int columns_ = 1, rows_ = 1;
   double cell_width_ = 0, cell_height_ = 0;
-  const Ball* balls_ = nullptr;  // the gas's rows of R (as of the last call)
+  const Gas* gas_ = nullptr;     // the gas of the last call (its rows of R)
   std::vector<Record> records_;  // by ball number 1..N (0 unused)
   std::vector<std::vector<Prediction>> more_predictions_;  // by ball: its list
                                                            // beyond the record's

@@ -5,7 +5,7 @@
 #include <bit>
 #include <cmath>
 
-#include "stage4_event_order.hpp"
+#include "stage4_first_collision.hpp"
 
 namespace gas {
 
@@ -33,7 +33,6 @@ void EventCalendar::reset(std::size_t count) {
   on_calendar_ = 0;
   laid_out_ = false;
   layouts_ = 0;
-  day_length_ = 0;
   today_ = 0;
   questions_ = looked_ = 0;
 }
@@ -96,9 +95,9 @@ void EventCalendar::lay_out() {
   std::nth_element(waits_.begin(), middle, waits_.end());
   // (For waits spread as in a gas, roughly exponentially, the median is 0.7
   // of the mean, and near today N keys fall about N / mean to a unit of time.)
-  day_length_ = 3 * *middle / static_cast<double>(waits_.size());
-  if (!(day_length_ > 0 && day_length_ < never)) day_length_ = 1;  // all at one time
-  days_per_unit_ = 1 / day_length_;
+  double day_length = 3 * *middle / static_cast<double>(waits_.size());
+  if (!(day_length > 0 && day_length < never)) day_length = 1;  // all at one time
+  days_per_unit_ = 1 / day_length;
   if (!(days_per_unit_ < never)) days_per_unit_ = 0x1p1000;  // days shorter than 1e-308
   first_day_starts_ = earliest_time;
   today_ = 0;

@@ -40,9 +40,6 @@ class EventCalendar {
   // an event.
   int earliest();
 
-  // The length of a day, in model time, for tests and the benchmark (0 until
-  // the first call of `earliest` after `reset`).
-  double day_length() const { return day_length_; }
   // How many times it was laid out since `reset` (for tests).
   long long layouts() const { return layouts_; }
 
@@ -72,12 +69,11 @@ class EventCalendar {
   std::size_t on_calendar_ = 0;        // how many balls have an event
   bool laid_out_ = false;              // are the days' length and start chosen?
   double first_day_starts_ = 0;        // model time at which day 0 starts
-  double day_length_ = 0;              // in model time
-  double days_per_unit_ = 0;           // 1 / day_length_
+  double days_per_unit_ = 0;           // 1 / the length of a day in model time
   long long layouts_ = 0;              // lay_out calls since reset
   std::int64_t today_ = 0;             // the day of the earliest key
   std::uint64_t questions_ = 0;        // calls of `earliest` since the last check
-  std::uint64_t looked_ = 0;           // balls of later years and empty days passed over
+  std::uint64_t looked_ = 0;           // balls compared and empty days turned since
 };
 
 }  // namespace gas

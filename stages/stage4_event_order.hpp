@@ -42,19 +42,14 @@ inline bool comes_before(double a, std::uint64_t pa, double b, std::uint64_t pb)
 }
 // [/anchor: scan-place]
 
-// The scan's time for a ball to reach a wall of kind K = 1 or K = 2: the
-// same expression as in find_first_collision, so the same bits.
-inline double wall_time(const Ball& ball, const CentreLimits& limits,
+// The scan's time for ball `number` (1..N) to reach a wall of kind K = 1 or
+// K = 2: the same expression as in find_first_collision, so the same bits.
+inline double wall_time(const Gas& gas, const CentreLimits& limits, int number,
                         CollisionKind kind) {
+  const Ball& ball = gas.balls[static_cast<std::size_t>(number - 1)];
   return kind == CollisionKind::horizontal_wall
              ? ball.since + time_to_wall(ball.y, ball.vy, limits.y_min, limits.y_max)
              : ball.since + time_to_wall(ball.x, ball.vx, limits.x_min, limits.x_max);
-}
-
-// The same for ball `number` (1..N) of the gas.
-inline double wall_time(const Gas& gas, const CentreLimits& limits, int number,
-                        CollisionKind kind) {
-  return wall_time(gas.balls[static_cast<std::size_t>(number - 1)], limits, kind);
 }
 
 // The scan's time for balls n3 < n4 to meet (time_of_contact(N3, N4), in that
