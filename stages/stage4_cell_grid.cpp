@@ -34,8 +34,10 @@ CellGrid::Prediction& CellGrid::prediction(int ball, std::uint32_t i) {
   return more_predictions_[static_cast<std::size_t>(ball)][i - predictions_kept];
 }
 
-void CellGrid::add(int ball, const Prediction& p) {
+// (The earliest stays at the front: the list's key.)
+void CellGrid::add(int ball, Prediction p) {
   Record& r = record(ball);
+  if (r.listed > 0 && earlier(ball, p, r.first[0])) std::swap(p, r.first[0]);
   if (r.listed < predictions_kept) {
     r.first[r.listed] = p;
   } else {
@@ -44,16 +46,21 @@ void CellGrid::add(int ball, const Prediction& p) {
   ++r.listed;
 }
 
-// Drops the predictions for which `dropped` says so; the others close up.
+// Drops the predictions for which `dropped` says so (the others close up),
+// and moves the earliest of the rest to the front.
 template <typename Dropped>
 void CellGrid::drop(int ball, Dropped dropped) {
-  const std::uint32_t listed = record(ball).listed;
+  Record& r = record(ball);
+  const std::uint32_t listed = r.listed;
   std::uint32_t kept = 0;
   for (std::uint32_t i = 0; i < listed; ++i) {
     const Prediction p = prediction(ball, i);
-    if (!dropped(p)) prediction(ball, kept++) = p;
+    if (dropped(p)) continue;
+    Prediction& slot = prediction(ball, kept++);
+    slot = p;
+    if (earlier(ball, slot, r.first[0])) std::swap(slot, r.first[0]);
   }
-  record(ball).listed = kept;
+  r.listed = kept;
   if (listed > predictions_kept)
     more_predictions_[static_cast<std::size_t>(ball)].resize(
         kept > predictions_kept ? kept - predictions_kept : 0);
@@ -100,6 +107,11 @@ std::uint64_t CellGrid::place(int ball, const Prediction& p) const {
   }
 }
 
+// Does p come before q in the scan's order (time, then place)?
+inline bool CellGrid::earlier(int ball, const Prediction& p, const Prediction& q) const {
+  return p.time < q.time || (p.time == q.time && place(ball, p) < place(ball, q));
+}
+
 // Made when the partner had the collisions it still has? (A ball's own
 // events are dropped with its list when it collides.)
 inline bool CellGrid::current(const Prediction& p) const {
@@ -124,19 +136,41 @@ void CellGrid::remove(int ball) {
   *link = next_in_cell_[static_cast<std::size_t>(ball)];
 }
 
-// The balls of a block of cells, `across` cells by `down` from the cell
-// (column, line), one after another: each(k) for ball k. (The frame of empty
-// cells around the table lets the block reach one cell beyond an edge.)
-template <typename Each>
-void CellGrid::for_each_ball(int column, int line, int across, int down,
-                             Each each) const {
+// Gathers into `neighbours_` the balls of a block of cells, `across` cells by
+// `down` from the cell (column, line); returns how many. (The frame of empty
+// cells around the table lets the block reach one cell beyond an edge.) A
+// cell's list is walked two steps without asking whether it has ended (the
+// list's end, ball 0, leads on to ball 0 again, and the count moves on only
+// for a ball): whether a cell holds none, one or two balls is a coin toss the
+// processor would guess wrong. Only a third ball takes a branch.
+// [anchor: grid-gather]
+template <int across, int down>
+std::size_t CellGrid::gather(int column, int line) {
+  std::int32_t* out = neighbours_.data();
+  const std::int32_t* next = next_in_cell_.data();
+  std::size_t found = 0;
   for (int l = line; l < line + down; ++l) {
-    const std::int32_t* cells = &head_[cell_index(column, l)];
-    for (int c = 0; c < across; ++c)
-      for (int k = cells[c]; k != 0; k = next_in_cell_[static_cast<std::size_t>(k)])
-        each(k);
+    const std::int32_t* heads = &head_[cell_index(column, l)];
+    for (int c = 0; c < across; ++c) {
+      std::int32_t k = heads[c];  // the cell's first ball, or 0
+      out[found] = k;
+      found += k != 0;
+      k = next[k];  // its second, or 0
+      out[found] = k;
+      found += k != 0;
+      for (k = next[k]; k != 0; k = next[k]) {  // a third and more: rare
+        // (Room for this ball and two for each cell of the block.)
+        if (neighbours_.size() < found + 1 + 2 * across * down) {
+          neighbours_.resize(2 * (found + 1 + 2 * across * down));
+          out = neighbours_.data();
+        }
+        out[found++] = k;
+      }
+    }
   }
+  return found;
 }
+// [/anchor: grid-gather]
 
 // ---- predictions
 
@@ -150,7 +184,10 @@ void CellGrid::add_wall(int ball, std::int32_t wall) {
 // A meeting, computed as the scan computes it: time_of_contact(N3, N4) with
 // N3 < N4.
 void CellGrid::add_pair(int ball, int other) {
-  const double time = pair_time(*gas_, std::min(ball, other), std::max(ball, other));
+  // (N4 found without a branch, which is lower being a coin toss: the xor of
+  // the two numbers, less one of them, is the other.)
+  const int n3 = std::min(ball, other), n4 = ball ^ other ^ n3;
+  const double time = pair_time(*gas_, n3, n4);
   if (time < never) add(ball, {time, other, count_[static_cast<std::size_t>(other)]});
 }
 
@@ -160,17 +197,21 @@ void CellGrid::add_pair(int ball, int other) {
 CellGrid::Prediction CellGrid::next_crossing(int ball) const {
   const Record& r = record(ball);
   const Ball& row = this->row(ball);
-  double across = never, down = never;
-  if (row.vx > 0 && r.column < columns_ - 1)
-    across = row.since + ((r.column + 1) * cell_width_ - row.x) / row.vx;
-  if (row.vx < 0 && r.column > 0)
-    across = row.since + (r.column * cell_width_ - row.x) / row.vx;
-  if (row.vy > 0 && r.line < rows_ - 1)
-    down = row.since + ((r.line + 1) * cell_height_ - row.y) / row.vy;
-  if (row.vy < 0 && r.line > 0)
-    down = row.since + (r.line * cell_height_ - row.y) / row.vy;
-  if (across <= down) return {across, cross_x, 0};
-  return {down, cross_y, 0};
+  // The side ahead along x: the cell's right side if vx > 0, its left if
+  // vx < 0; none if vx = 0 or if that side is the table's edge (the wall
+  // comes first). The same along y. Both times are computed and the answer
+  // selected, not branched on: the signs of vx and vy are coin tosses the
+  // processor would guess wrong. (A time divided by vx = 0 is infinite or
+  // not a number, and never selected.)
+  const bool right = row.vx > 0, up = row.vy > 0;
+  const bool open_x =
+      (right & (r.column < columns_ - 1)) | ((row.vx < 0) & (r.column > 0));
+  const bool open_y = (up & (r.line < rows_ - 1)) | ((row.vy < 0) & (r.line > 0));
+  const double to_x = row.since + ((r.column + right) * cell_width_ - row.x) / row.vx;
+  const double to_y = row.since + ((r.line + up) * cell_height_ - row.y) / row.vy;
+  const double across = open_x ? to_x : never, down = open_y ? to_y : never;
+  const bool x_first = across <= down;
+  return {x_first ? across : down, x_first ? cross_x : cross_y, 0};
 }
 
 // A ball's list made afresh (its row of R is new): the walls along its cell's
@@ -181,35 +222,28 @@ void CellGrid::predict(int ball, int skip, int lowest) {
   const Record& r = record(ball);
   const int column = r.column, line = r.line;
   const Ball& row = this->row(ball);
-  if ((row.vy > 0 && line == rows_ - 1) || (row.vy < 0 && line == 0))
+  // (Asked with & and |, not && and ||: one branch, nearly always the same
+  // way, instead of one on each coin-toss sign.)
+  if (((row.vy > 0) & (line == rows_ - 1)) | ((row.vy < 0) & (line == 0)))
     add_wall(ball, horizontal_wall);
-  if ((row.vx > 0 && column == columns_ - 1) || (row.vx < 0 && column == 0))
+  if (((row.vx > 0) & (column == columns_ - 1)) | ((row.vx < 0) & (column == 0)))
     add_wall(ball, vertical_wall);
-  for_each_ball(column - 1, line - 1, 3, 3, [&](int k) {
-    if (k >= lowest && k != ball && k != skip) add_pair(ball, k);
-  });
+  const std::size_t found = gather<3, 3>(column - 1, line - 1);
+  // Set aside the ball itself, `skip` and those below `lowest`, again by
+  // arithmetic rather than by a branch.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < found; ++i) {
+    const std::int32_t k = neighbours_[i];
+    neighbours_[kept] = k;
+    kept += static_cast<std::size_t>((k != ball) & (k != skip) & (k >= lowest));
+  }
+  for (std::size_t i = 0; i < kept; ++i) add_pair(ball, neighbours_[i]);
   const Prediction crossing = next_crossing(ball);
   if (crossing.time < never) add(ball, crossing);
 }
 
-// The ball's key: the earliest current prediction of its list, moved to the
-// front (the others, out of date, are dropped on the way).
-void CellGrid::choose_earliest(int ball) {
-  drop(ball, [&](const Prediction& p) { return !current(p); });
-  const std::uint32_t listed = record(ball).listed;
-  std::uint32_t earliest = 0;
-  for (std::uint32_t i = 1; i < listed; ++i) {
-    const Prediction& p = prediction(ball, i);
-    const Prediction& e = prediction(ball, earliest);
-    if (p.time < e.time || (p.time == e.time && place(ball, p) < place(ball, e)))
-      earliest = i;
-  }
-  if (earliest != 0) std::swap(prediction(ball, 0), prediction(ball, earliest));
-}
-
-// The same, and the ball's key moved to its day in the calendar.
-void CellGrid::refresh(int ball) {
-  choose_earliest(ball);
+// The ball's key moved to its day in the calendar.
+void CellGrid::schedule(int ball) {
   const Prediction earliest = key(ball);
   calendar_.schedule(ball, earliest.time, place(ball, earliest));
 }
@@ -227,21 +261,16 @@ void CellGrid::cross(int ball, bool along_x) {
   drop(ball,
        [](const Prediction& p) { return p.partner == cross_x || p.partner == cross_y; });
   // The new neighbours: the column (or row of cells) one further on.
-  const auto new_neighbours = [&](auto each) {
-    if (along_x) {
-      for_each_ball(column + step, line - 1, 1, 3, each);
-    } else {
-      for_each_ball(column - 1, line + step, 3, 1, each);
-    }
-  };
-  new_neighbours([&](int k) { add_pair(ball, k); });
+  const std::size_t found = along_x ? gather<1, 3>(column + step, line - 1)
+                                    : gather<3, 1>(column - 1, line + step);
+  for (std::size_t i = 0; i < found; ++i) add_pair(ball, neighbours_[i]);
   if (along_x && (step > 0 ? column == columns_ - 1 : column == 0))
     add_wall(ball, vertical_wall);
   if (!along_x && (step > 0 ? line == rows_ - 1 : line == 0))
     add_wall(ball, horizontal_wall);
   const Prediction crossing = next_crossing(ball);
   if (crossing.time < never) add(ball, crossing);
-  refresh(ball);
+  schedule(ball);
 }
 
 // ---- the three calls
@@ -271,6 +300,7 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   next_in_cell_.assign(n + 1, 0);
   head_.assign(
       static_cast<std::size_t>(columns_ + 2) * static_cast<std::size_t>(rows_ + 2), 0);
+  neighbours_.assign(2 * 9, 0);  // two for each of 3 x 3 cells; more if need be
   gas_ = &gas;
   const int count = static_cast<int>(n);
   for (int ball = 1; ball <= count; ++ball) {
@@ -282,7 +312,7 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   calendar_.reset(n);
   for (int ball = 1; ball <= count; ++ball) {
     predict(ball, 0, ball + 1);
-    refresh(ball);
+    schedule(ball);
   }
 }
 
@@ -293,7 +323,8 @@ Collision CellGrid::first(const Gas& gas) {
   for (int ball = calendar_.earliest(); ball != 0; ball = calendar_.earliest()) {
     const Prediction p = key(ball);
     if (!current(p)) {  // its partner has collided since: dropped
-      refresh(ball);
+      drop(ball, [&](const Prediction& q) { return !current(q); });
+      schedule(ball);
     } else if (p.partner == cross_x || p.partner == cross_y) {
       cross(ball, p.partner == cross_x);
     } else if (p.partner > 0) {
@@ -321,10 +352,10 @@ void CellGrid::update(const Gas& gas, const Collision& done) {
   ++count_[static_cast<std::size_t>(done.first)];
   if (pair) ++count_[static_cast<std::size_t>(done.second)];
   predict(done.first, 0, 1);
-  refresh(done.first);
+  schedule(done.first);
   if (pair) {
     predict(done.second, done.first, 1);  // the pair itself is in N1's list
-    refresh(done.second);
+    schedule(done.second);
   }
 }
 // [/anchor: grid-update]

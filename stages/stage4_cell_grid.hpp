@@ -25,7 +25,15 @@
 // memory, a wait worth hundreds of arithmetic steps. So the grid keeps its
 // books small: a ball's cell and first predictions in one record of a cache
 // line, the collision counts and the cells' lists in arrays of 4-byte
-// numbers; the rows of R it reads from the gas.
+// numbers, all in large pages (stage4_large_pages.hpp); the rows of R it
+// reads from the gas.
+//
+// And a processor guesses which way each `if` goes, long before it knows;
+// a wrong guess throws away some fifteen steps of work. Whether a cell holds
+// a ball, whether a neighbour's number is the lower, which way a ball moves:
+// these are coin tosses, so where they are asked for every neighbour the
+// grid answers them by arithmetic (a count moved on by 0 or 1, a value
+// selected) instead of by a branch.
 //
 // Beyond the article: the article scans every wall and every pair for each
 // collision. The answer here is the scan's, bit for bit, ties included: the
@@ -47,6 +55,7 @@
 #include "stage3_screen.hpp"
 #include "stage4_event_calendar.hpp"
 #include "stage4_first_collision.hpp"
+#include "stage4_large_pages.hpp"
 
 namespace gas {
 
@@ -122,7 +131,7 @@ class CellGrid {
 
   // A ball's list of predictions.
   Prediction& prediction(int ball, std::uint32_t i);
-  void add(int ball, const Prediction& p);
+  void add(int ball, Prediction p);  // (keeps the earliest at the front)
   template <typename Dropped>
   void drop(int ball, Dropped dropped);
   void forget(int ball);
@@ -130,31 +139,33 @@ class CellGrid {
 
   std::uint64_t place(int ball, const Prediction& p) const;
   bool current(const Prediction& p) const;
+  bool earlier(int ball, const Prediction& p, const Prediction& q) const;
 
   void predict(int ball, int skip, int lowest);
   void add_pair(int ball, int other);
   void add_wall(int ball, std::int32_t wall);
   Prediction next_crossing(int ball) const;
   void cross(int ball, bool along_x);
-  void choose_earliest(int ball);
-  void refresh(int ball);
+  void schedule(int ball);
   void insert(int ball, int column, int line);
   void remove(int ball);
-  template <typename Each>
-  void for_each_ball(int column, int line, int across, int down, Each each) const;
+  template <int across, int down>
+  std::size_t gather(int column, int line);
 
   CentreLimits limits_;
   int columns_ = 1, rows_ = 1;
   double cell_width_ = 0, cell_height_ = 0;
-  const Gas* gas_ = nullptr;     // the gas of the last call (its rows of R)
-  std::vector<Record> records_;  // by ball number 1..N (0 unused)
+  const Gas* gas_ = nullptr;         // the gas of the last call (its rows of R)
+  LargePageVector<Record> records_;  // by ball number 1..N (0 unused)
   std::vector<std::vector<Prediction>> more_predictions_;  // by ball: its list
                                                            // beyond the record's
-  std::vector<std::uint32_t> count_;        // by ball: its collisions so far (wraps
-                                            // after 2^32: harmless unless a
-                                            // prediction waits that long)
-  std::vector<std::int32_t> next_in_cell_;  // by ball: the next in its cell; 0 ends
-  std::vector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
+  LargePageVector<std::uint32_t> count_;        // by ball: its collisions so far (wraps
+                                                // after 2^32: harmless unless a
+                                                // prediction waits that long)
+  LargePageVector<std::int32_t> next_in_cell_;  // by ball: the next in its cell; 0 ends
+                                                // (and next_in_cell_[0] stays 0)
+  LargePageVector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
+  std::vector<std::int32_t> neighbours_;        // gather's answer: balls of a block
   EventCalendar calendar_;  // every ball with an event, keyed by the earliest
 };
 

@@ -25,6 +25,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "stage4_large_pages.hpp"
+
 namespace gas {
 
 class EventCalendar {
@@ -61,19 +63,19 @@ class EventCalendar {
   void lay_out();
   int earliest_of_today();
 
-  std::vector<Entry> entries_;         // by ball number 1..N (entry 0 unused)
-  std::vector<std::uint64_t> places_;  // by ball number: its key's place
-  std::vector<double> waits_;          // lay_out's scratch
-  std::vector<std::int32_t> page_;     // first ball on each page, or 0
-  std::uint64_t page_mask_ = 0;        // pages - 1 (pages is a power of two)
-  std::size_t on_calendar_ = 0;        // how many balls have an event
-  bool laid_out_ = false;              // are the days' length and start chosen?
-  double first_day_starts_ = 0;        // model time at which day 0 starts
-  double days_per_unit_ = 0;           // 1 / the length of a day in model time
-  long long layouts_ = 0;              // lay_out calls since reset
-  std::int64_t today_ = 0;             // the day of the earliest key
-  std::uint64_t questions_ = 0;        // calls of `earliest` since the last check
-  std::uint64_t looked_ = 0;           // balls compared and empty days turned since
+  LargePageVector<Entry> entries_;         // by ball number 1..N (entry 0 unused)
+  LargePageVector<std::uint64_t> places_;  // by ball number: its key's place
+  std::vector<double> waits_;              // lay_out's scratch
+  LargePageVector<std::int32_t> page_;     // first ball on each page, or 0
+  std::uint64_t page_mask_ = 0;            // pages - 1 (pages is a power of two)
+  std::size_t on_calendar_ = 0;            // how many balls have an event
+  bool laid_out_ = false;                  // are the days' length and start chosen?
+  double first_day_starts_ = 0;            // model time at which day 0 starts
+  double days_per_unit_ = 0;               // 1 / the length of a day in model time
+  long long layouts_ = 0;                  // lay_out calls since reset
+  std::int64_t today_ = 0;                 // the day of the earliest key
+  std::uint64_t questions_ = 0;            // calls of `earliest` since the last check
+  std::uint64_t looked_ = 0;               // balls compared and empty days turned since
 };
 
 }  // namespace gas
