@@ -150,7 +150,7 @@ std::size_t CellGrid::gather(int column, int line) {
   const std::int32_t* next = next_in_cell_.data();
   std::size_t found = 0;
   for (int l = line; l < line + down; ++l) {
-    const std::int32_t* heads = &head_[cell_index(column, l)];
+    const std::int32_t* heads = &head(column, l);
     for (int c = 0; c < across; ++c) {
       std::int32_t k = heads[c];  // the cell's first ball, or 0
       out[found] = k;
@@ -174,6 +174,18 @@ std::size_t CellGrid::gather(int column, int line) {
 
 // ---- predictions
 
+// Is the ball moving towards the table's edge along x (or y), its cell the
+// last one that way? Then a wall is ahead of it, and no cell crossing.
+// (Asked with & and |, not && and ||: the sign of the velocity is a coin
+// toss the processor would guess wrong.)
+bool CellGrid::edge_ahead(int ball, bool along_x) const {
+  const Record& r = record(ball);
+  const double velocity = along_x ? row(ball).vx : row(ball).vy;
+  const int cell = along_x ? r.column : r.line;
+  const int last = (along_x ? columns_ : rows_) - 1;
+  return ((velocity > 0) & (cell == last)) | ((velocity < 0) & (cell == 0));
+}
+
 void CellGrid::add_wall(int ball, std::int32_t wall) {
   const double time = wall_time(*gas_, limits_, ball,
                                 wall == horizontal_wall ? CollisionKind::horizontal_wall
@@ -193,20 +205,18 @@ void CellGrid::add_pair(int ball, int other) {
 
 // The next time the centre leaves its cell: through the side ahead of it in
 // x or in y, whichever comes first (none at the table's edge: the wall comes
-// before).
+// first).
 CellGrid::Prediction CellGrid::next_crossing(int ball) const {
   const Record& r = record(ball);
   const Ball& row = this->row(ball);
   // The side ahead along x: the cell's right side if vx > 0, its left if
-  // vx < 0; none if vx = 0 or if that side is the table's edge (the wall
-  // comes first). The same along y. Both times are computed and the answer
-  // selected, not branched on: the signs of vx and vy are coin tosses the
-  // processor would guess wrong. (A time divided by vx = 0 is infinite or
-  // not a number, and never selected.)
+  // vx < 0; none if vx = 0 or at the table's edge. The same along y. Both
+  // times are computed and the answer selected, not branched on: the signs
+  // of vx and vy are coin tosses the processor would guess wrong. (A time
+  // divided by vx = 0 is infinite or not a number, and never selected.)
   const bool right = row.vx > 0, up = row.vy > 0;
-  const bool open_x =
-      (right & (r.column < columns_ - 1)) | ((row.vx < 0) & (r.column > 0));
-  const bool open_y = (up & (r.line < rows_ - 1)) | ((row.vy < 0) & (r.line > 0));
+  const bool open_x = (row.vx != 0) & !edge_ahead(ball, true);
+  const bool open_y = (row.vy != 0) & !edge_ahead(ball, false);
   const double to_x = row.since + ((r.column + right) * cell_width_ - row.x) / row.vx;
   const double to_y = row.since + ((r.line + up) * cell_height_ - row.y) / row.vy;
   const double across = open_x ? to_x : never, down = open_y ? to_y : never;
@@ -219,16 +229,9 @@ CellGrid::Prediction CellGrid::next_crossing(int ball) const {
 // `skip`, and only those numbered from `lowest`), its next crossing.
 void CellGrid::predict(int ball, int skip, int lowest) {
   forget(ball);
-  const Record& r = record(ball);
-  const int column = r.column, line = r.line;
-  const Ball& row = this->row(ball);
-  // (Asked with & and |, not && and ||: one branch, nearly always the same
-  // way, instead of one on each coin-toss sign.)
-  if (((row.vy > 0) & (line == rows_ - 1)) | ((row.vy < 0) & (line == 0)))
-    add_wall(ball, horizontal_wall);
-  if (((row.vx > 0) & (column == columns_ - 1)) | ((row.vx < 0) & (column == 0)))
-    add_wall(ball, vertical_wall);
-  const std::size_t found = gather<3, 3>(column - 1, line - 1);
+  if (edge_ahead(ball, false)) add_wall(ball, horizontal_wall);
+  if (edge_ahead(ball, true)) add_wall(ball, vertical_wall);
+  const std::size_t found = gather<3, 3>(record(ball).column - 1, record(ball).line - 1);
   // Set aside the ball itself, `skip` and those below `lowest`, again by
   // arithmetic rather than by a branch.
   std::size_t kept = 0;
@@ -264,10 +267,8 @@ void CellGrid::cross(int ball, bool along_x) {
   const std::size_t found = along_x ? gather<1, 3>(column + step, line - 1)
                                     : gather<3, 1>(column - 1, line + step);
   for (std::size_t i = 0; i < found; ++i) add_pair(ball, neighbours_[i]);
-  if (along_x && (step > 0 ? column == columns_ - 1 : column == 0))
-    add_wall(ball, vertical_wall);
-  if (!along_x && (step > 0 ? line == rows_ - 1 : line == 0))
-    add_wall(ball, horizontal_wall);
+  if (edge_ahead(ball, along_x))
+    add_wall(ball, along_x ? vertical_wall : horizontal_wall);
   const Prediction crossing = next_crossing(ball);
   if (crossing.time < never) add(ball, crossing);
   schedule(ball);

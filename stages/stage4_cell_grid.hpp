@@ -144,6 +144,7 @@ class CellGrid {
   void predict(int ball, int skip, int lowest);
   void add_pair(int ball, int other);
   void add_wall(int ball, std::int32_t wall);
+  bool edge_ahead(int ball, bool along_x) const;
   Prediction next_crossing(int ball) const;
   void cross(int ball, bool along_x);
   void schedule(int ball);
