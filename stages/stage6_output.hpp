@@ -19,7 +19,7 @@
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
 #include "stage5_new_coordinates.hpp"
-#include "stage6_statistics.hpp"
+#include "beyond/kinetic_theory.hpp"
 
 namespace gas {
 

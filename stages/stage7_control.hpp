@@ -18,7 +18,7 @@
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
 #include "stage4_first_collision.hpp"
-#include "stage4_strategy.hpp"
+#include "beyond/strategy.hpp"
 #include "stage5_new_coordinates.hpp"
 
 namespace gas {

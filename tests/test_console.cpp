@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "console.hpp"
+#include "program/console.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"

@@ -15,7 +15,7 @@
 #include <random>
 #include <vector>
 
-#include "console.hpp"
+#include "program/console.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 

@@ -21,7 +21,7 @@
 #include <cmath>
 #include <vector>
 
-#include "console.hpp"
+#include "program/console.hpp"
 #include "reference_gas.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"

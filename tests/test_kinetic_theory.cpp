@@ -1,4 +1,4 @@
-// Tests for the statistics screen's physics (stages/stage6_statistics.*,
+// Tests for the statistics screen's physics (stages/beyond/kinetic_theory.*,
 // lessons/11-kinetic-theory.md): the gas, run by the program's own stages,
 // against kinetic theory.
 //
@@ -26,7 +26,7 @@
 #include <random>
 #include <vector>
 
-#include "stage6_statistics.hpp"
+#include "beyond/kinetic_theory.hpp"
 #include "stage7_control.hpp"
 
 namespace {

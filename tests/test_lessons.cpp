@@ -141,13 +141,14 @@ void read_anchors(const std::string& file, const std::string& text,
   }
 }
 
-// The files of stages/ that can hold anchors.
+// The files of stages/ and its folders beyond/ and program/ that can hold
+// anchors.
 std::vector<std::string> stage_files() {
   std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(source_path("stages"))) {
+  for (const auto& entry : fs::recursive_directory_iterator(source_path("stages"))) {
     const std::string extension = entry.path().extension().string();
     if (entry.is_regular_file() && (extension == ".hpp" || extension == ".cpp")) {
-      files.push_back("stages/" + entry.path().filename().string());
+      files.push_back(fs::relative(entry.path(), source_path("")).generic_string());
     }
   }
   std::sort(files.begin(), files.end());

@@ -31,11 +31,11 @@
 #include <string>
 #include <vector>
 
-#include "console.hpp"
+#include "program/console.hpp"
 #include "stage2_input.hpp"
-#include "stage4_cell_grid.hpp"
-#include "stage4_event_table.hpp"
-#include "stage4_strategy.hpp"
+#include "beyond/cell_grid.hpp"
+#include "beyond/event_table.hpp"
+#include "beyond/strategy.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"
 

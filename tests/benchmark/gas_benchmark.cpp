@@ -41,10 +41,10 @@
 #include <vector>
 
 #include "benchmark_build_info.hpp"
-#include "console.hpp"
+#include "program/console.hpp"
 #include "reference_gas.hpp"
 #include "stage2_input.hpp"
-#include "stage4_strategy.hpp"
+#include "beyond/strategy.hpp"
 #include "stage5_new_coordinates.hpp"
 #include "stage7_control.hpp"
 #include "time_stepped.hpp"
@@ -996,7 +996,7 @@ int run(const Settings& settings) {
       "and sparse: the table beats the scan from {} and {}; the grid beats the scan "
       "from {} and {}, and the table from {} and {}. `gas` keeps the article's scan up "
       "to {} balls, the table up to {}, and the grid beyond (`strategy_for` in "
-      "`stages/stage4_strategy.hpp`): the scan for a handful on purpose, so that "
+      "`stages/beyond/strategy.hpp`): the scan for a handful on purpose, so that "
       "`--trace` on the teaching scenes shows the article's own stage 4 (any way "
       "takes well under a microsecond a collision there); the table while it "
       "beats the grid on a sparse gas.\n\n",

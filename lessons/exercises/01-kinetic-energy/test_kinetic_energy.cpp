@@ -9,7 +9,7 @@
 // checks can ask for equality.
 #include <doctest/doctest.h>
 
-#include "console.hpp"
+#include "program/console.hpp"
 #include "exercise_test.hpp"
 #include "stage1_data.hpp"
 #include "stage2_input.hpp"

@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-#include "console.hpp"
+#include "program/console.hpp"
 #include "exercise_test.hpp"
 #include "stage1_data.hpp"
 #include "stage2_input.hpp"

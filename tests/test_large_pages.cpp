@@ -1,4 +1,4 @@
-// Memory in large pages (stages/stage4_large_pages.hpp): the grid's books.
+// Memory in large pages (stages/beyond/large_pages.hpp): the grid's books.
 //
 // Whether the system backs a block by 2 MiB pages is its own decision (the
 // allocator only asks), so a test cannot require it. What the allocator does
@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-#include "stage4_large_pages.hpp"
+#include "beyond/large_pages.hpp"
 
 namespace {
 

@@ -11,7 +11,7 @@
 //
 // Each ball keeps a short list of its predictions (the walls ahead of it, its
 // next crossing, the meetings it predicted), and an event calendar
-// (stage4_event_calendar.*) holds every ball once, keyed by the earliest
+// (beyond/event_calendar.*) holds every ball once, keyed by the earliest
 // prediction in its list. After a collision the lists of its balls are made
 // afresh. The other balls may still hold predictions of meetings with them,
 // now worthless; rather than hunt those down, every ball counts its
@@ -25,7 +25,7 @@
 // memory, a wait worth hundreds of arithmetic steps. So the grid keeps its
 // books small: a ball's cell and first predictions in one record of a cache
 // line, the collision counts and the cells' lists in arrays of 4-byte
-// numbers, all in large pages (stage4_large_pages.hpp); the rows of R it
+// numbers, all in large pages (beyond/large_pages.hpp); the rows of R it
 // reads from the gas.
 //
 // And a processor guesses which way each `if` goes, long before it knows;
@@ -39,7 +39,7 @@
 // collision. The answer here is the scan's, bit for bit, ties included: the
 // predictions are stage 4's time_to_wall and time_of_contact on the same rows
 // of R (a crossing never rewrites a row), and events are ordered as the scan
-// meets them (stage4_event_order.hpp), crossings first.
+// meets them (beyond/event_order.hpp), crossings first.
 // Lesson: lessons/10-scaling.md
 //
 // Assumptions: between two calls of `first`, the gas changes only by the
@@ -53,9 +53,9 @@
 
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
-#include "stage4_event_calendar.hpp"
+#include "beyond/event_calendar.hpp"
 #include "stage4_first_collision.hpp"
-#include "stage4_large_pages.hpp"
+#include "beyond/large_pages.hpp"
 
 namespace gas {
 

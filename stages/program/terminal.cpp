@@ -1,5 +1,5 @@
 // The terminal. See terminal.hpp.
-#include "terminal.hpp"
+#include "program/terminal.hpp"
 
 #include <poll.h>
 #include <sys/ioctl.h>

@@ -1,11 +1,11 @@
 // Stage 4 — first collision, by a grid of cells and a calendar of events. See
-// stage4_cell_grid.hpp.
-#include "stage4_cell_grid.hpp"
+// beyond/cell_grid.hpp.
+#include "beyond/cell_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "stage4_event_order.hpp"
+#include "beyond/event_order.hpp"
 
 namespace gas {
 

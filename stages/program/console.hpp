@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "stage4_strategy.hpp"
+#include "beyond/strategy.hpp"
 #include "stage6_output.hpp"
 
 namespace gas {

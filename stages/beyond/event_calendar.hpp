@@ -11,7 +11,7 @@
 // N is; a binary heap takes log2 N steps, each at a scattered place in
 // memory.
 // Beyond the article: the article scans every event anew. Ties are broken
-// exactly as the scan breaks them (stage4_event_order.hpp): a day is only a
+// exactly as the scan breaks them (beyond/event_order.hpp): a day is only a
 // coarse first sorting, the same for equal times, and the balls of a day are
 // compared by (time, place).
 // Lesson: lessons/10-scaling.md
@@ -25,7 +25,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "stage4_large_pages.hpp"
+#include "beyond/large_pages.hpp"
 
 namespace gas {
 

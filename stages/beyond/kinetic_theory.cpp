@@ -1,6 +1,6 @@
-// Stage 6 — kinetic theory and running averages. See stage6_statistics.hpp
+// Stage 6 — kinetic theory and running averages. See beyond/kinetic_theory.hpp
 // and lessons/11-kinetic-theory.md for where each formula comes from.
-#include "stage6_statistics.hpp"
+#include "beyond/kinetic_theory.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // The console program `gas`. See console.hpp.
-#include "console.hpp"
+#include "program/console.hpp"
 
 #include <fmt/format.h>
 
@@ -13,7 +13,7 @@
 
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
-#include "terminal.hpp"
+#include "program/terminal.hpp"
 
 namespace gas {
 namespace {

@@ -1,4 +1,4 @@
-// The event calendar (stages/stage4_event_calendar.*): the cell grid's queue.
+// The event calendar (stages/beyond/event_calendar.*): the cell grid's queue.
 //
 // The calendar must give exactly the ball with the smallest key (time, then
 // place) — not nearly: the grid promises the scan's answer bit for bit, ties
@@ -20,7 +20,7 @@
 #include <random>
 #include <vector>
 
-#include "stage4_event_calendar.hpp"
+#include "beyond/event_calendar.hpp"
 #include "stage4_first_collision.hpp"
 
 namespace {

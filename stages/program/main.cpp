@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "console.hpp"
+#include "program/console.hpp"
 
 int main(int argc, char** argv) {
   return gas::run_console(std::vector<std::string>(argv + 1, argv + argc));

@@ -1,5 +1,5 @@
-// Stage 4 — first collision: an event calendar. See stage4_event_calendar.hpp.
-#include "stage4_event_calendar.hpp"
+// Stage 4 — first collision: an event calendar. See beyond/event_calendar.hpp.
+#include "beyond/event_calendar.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -11,7 +11,7 @@
 // Beyond the article: the article scans every wall and every pair for each
 // collision. The answer here is the scan's, bit for bit, ties included: the
 // same formulas (stage 4's time_to_wall and time_of_contact) and the scan's
-// order (stage4_event_order.hpp).
+// order (beyond/event_order.hpp).
 // Lesson: lessons/10-scaling.md
 //
 // Assumptions: between two calls of `first`, the gas changes only by the

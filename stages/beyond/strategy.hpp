@@ -1,8 +1,8 @@
 // Stage 4 — first collision: the three ways to find it, and which to use.
 //
 // What this file does: puts the article's scan (stage4_first_collision.*),
-// the table of next events (stage4_event_table.*) and the cell grid
-// (stage4_cell_grid.*) behind one small interface — predict from scratch,
+// the table of next events (beyond/event_table.*) and the cell grid
+// (beyond/cell_grid.*) behind one small interface — predict from scratch,
 // give the first collision, take note of a collision carried out — and picks
 // one for a scene by its number of balls.
 // Beyond the article: the article has only the scan. All three give the same
@@ -22,8 +22,8 @@
 
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
-#include "stage4_cell_grid.hpp"
-#include "stage4_event_table.hpp"
+#include "beyond/cell_grid.hpp"
+#include "beyond/event_table.hpp"
 #include "stage4_first_collision.hpp"
 
 namespace gas {

@@ -1,5 +1,5 @@
-// Stage 4 — the three ways to find the first collision. See stage4_strategy.hpp.
-#include "stage4_strategy.hpp"
+// Stage 4 — the three ways to find the first collision. See beyond/strategy.hpp.
+#include "beyond/strategy.hpp"
 
 namespace gas {
 

@@ -1,8 +1,8 @@
 // Stage 4 — first collision, by a table of next events. See
-// stage4_event_table.hpp.
-#include "stage4_event_table.hpp"
+// beyond/event_table.hpp.
+#include "beyond/event_table.hpp"
 
-#include "stage4_event_order.hpp"
+#include "beyond/event_order.hpp"
 
 namespace gas {
 

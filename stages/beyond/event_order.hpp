@@ -3,7 +3,7 @@
 // What this file does: gives every event stage 4 can find a key — its time,
 // then its place in the article's scan — and computes each event's time with
 // the scan's own formulas. A program that keeps its predictions from one
-// collision to the next (stage4_event_table.*, stage4_cell_grid.*) and takes
+// collision to the next (beyond/event_table.*, beyond/cell_grid.*) and takes
 // the event with the smallest key finds exactly the collision the scan finds:
 // the same TC to the last bit, and the same K, N1, N2 when events tie.
 // Beyond the article: the article scans afresh for every collision and needs
