@@ -70,32 +70,22 @@ Collision find_first_collision(const Gas& gas, const CentreLimits& limits) {
 
   // Find the earliest wall collision: each ball against the walls.
   for (int i = 1; i <= n; ++i) {
-    const Ball& ball = gas.balls[static_cast<std::size_t>(i - 1)];
-    const double to_horizontal =
-        time_to_wall(ball.y, ball.vy, limits.y_min, limits.y_max);
-    const double to_vertical = time_to_wall(ball.x, ball.vx, limits.x_min, limits.x_max);
-    if (ball.since + to_horizontal < first.time) {
-      first = {ball.since + to_horizontal, CollisionKind::horizontal_wall, i, 0};
-    }
-    if (ball.since + to_vertical < first.time) {
-      first = {ball.since + to_vertical, CollisionKind::vertical_wall, i, 0};
-    }
+    const double horizontal = wall_time(gas, limits, i, CollisionKind::horizontal_wall);
+    const double vertical = wall_time(gas, limits, i, CollisionKind::vertical_wall);
+    if (horizontal < first.time) first = {horizontal, CollisionKind::horizontal_wall, i, 0};
+    if (vertical < first.time) first = {vertical, CollisionKind::vertical_wall, i, 0};
   }
 
   // Find an earlier collision of two balls: every pair N3 < N4.
-  const double diameter = 2 * gas.radius;
   for (int n3 = 1; n3 < n; ++n3) {
     for (int n4 = n3 + 1; n4 <= n; ++n4) {
-      const double contact =
-          time_of_contact(gas.balls[static_cast<std::size_t>(n3 - 1)],
-                          gas.balls[static_cast<std::size_t>(n4 - 1)], diameter);
+      const double contact = pair_time(gas, n3, n4);
       if (contact < first.time) first = {contact, CollisionKind::balls, n3, n4};
     }
   }
 
   // Round-off can place a collision a hair before the present; it is due now.
-  if (first.kind != CollisionKind::none) first.time = std::max(first.time, gas.time);
-  return first;
+  return due_from(first, gas.time);
 }
 // [/anchor: find-first-collision]
 #endif

@@ -21,18 +21,22 @@
 namespace gas {
 
 // T1, the time to the next picture: the display step T0 if the first
-// collision comes later than T + T0, else just up to the collision. (The
-// article says what to do for TC > T + T0 and for TC < T + T0; at
-// TC = T + T0 exactly the step ends on the collision.)
+// collision comes later than T + T0, else just up to the collision, T1 = TC - T.
+// (The article says what to do for TC > T + T0 and for TC < T + T0; at
+// TC = T + T0 exactly the step ends on the collision.) Stage 7's loop asks
+// this one function where each step ends.
 // [anchor: step-length]
-inline bool collision_within_step(double now, double display_step,
-                                  double collision_time) {
-  return !(collision_time > now + display_step);
-}
+struct StepEnd {
+  double time = 0;            // T + T1, the model time of the next picture
+  bool on_collision = false;  // T1 = TC - T: the step ends on the first collision
+};
 
-inline double step_length(double now, double display_step, double collision_time) {
-  return collision_within_step(now, display_step, collision_time) ? collision_time - now
-                                                                  : display_step;
+inline StepEnd step_end(double now, double display_step, double collision_time) {
+  // TC > T + T0: no collision in this step, T1 = T0.
+  if (collision_time > now + display_step) return {now + display_step, false};
+  // Else T1 = TC - T: the step ends at exactly TC (T + (TC - T) may round to
+  // either side of it).
+  return {collision_time, true};
 }
 // [/anchor: step-length]
 

@@ -9,10 +9,9 @@
 
 namespace gas {
 
-Control start_control(Gas gas, std::optional<Strategy> strategy) {
+Control start_control(Gas gas, std::unique_ptr<FirstCollisionFinder> finder) {
   Control control;
-  control.finder =
-      FirstCollisionFinder(strategy.value_or(strategy_for(gas.balls.size())));
+  control.finder = finder ? std::move(finder) : std::make_unique<ArticleScan>();
   control.gas = std::move(gas);
   control.limits = centre_limits(control.gas);
   control.starting_energy = kinetic_energy(control.gas);
@@ -52,8 +51,8 @@ void trace_first_collision(std::FILE* trace, const Collision& c) {
 // velocities, every prediction is made afresh; otherwise the finder goes on
 // from the collisions it was told of (for the article's scan: the same thing).
 void find_next(Control& control, std::FILE* trace) {
-  if (control.must_find_collision) control.finder.rebuild(control.gas, control.limits);
-  control.next = control.finder.first(control.gas);
+  if (control.must_find_collision) control.finder->rebuild(control.gas, control.limits);
+  control.next = control.finder->first(control.gas);
   control.must_find_collision = false;
   trace_first_collision(trace, control.next);
 }
@@ -68,7 +67,7 @@ void carry_out(Control& control, Step& step, std::FILE* trace) {
   if (c.kind == CollisionKind::vertical_wall)
     control.vertical_wall_push += 2 * std::abs(first.vx);
   apply_collision(control.gas, control.limits, c);
-  control.finder.update(control.gas, c);
+  control.finder->update(control.gas, c);
   if (c.kind == CollisionKind::balls) {
     ++control.ball_collisions;
   } else {
@@ -92,29 +91,24 @@ Step take_step(Control& control, double time_limit, std::FILE* trace) {
   // velocities).
   if (control.must_find_collision) find_next(control, trace);
 
-  // Stage 5: T1 = T0 if no collision is due within the step, else TC - T.
-  // The step ends at exactly TC (not at T + (TC - T), which may round to
-  // either side of it), and never past the time limit.
+  // Stage 5: T1 = T0 if no collision is due within the step, else TC - T;
+  // never past the time limit.
   const double now = gas.time;
-  bool collision_due = collision_within_step(now, gas.display_step, control.next.time);
-  double new_time = collision_due ? control.next.time : now + gas.display_step;
-  const bool limited = new_time > time_limit;
-  if (limited) {
-    new_time = time_limit;
-    collision_due = control.next.time <= time_limit;
-  }
-  step.length = new_time - now;
-  shift_time(gas, control.picture, new_time);
+  StepEnd end = step_end(now, gas.display_step, control.next.time);
+  const bool limited = end.time > time_limit;
+  if (limited) end = {time_limit, control.next.time <= time_limit};
+  step.length = end.time - now;
+  shift_time(gas, control.picture, end.time);
   if (trace != nullptr) {
     fmt::print(trace, "stage 5  new coordinates: T1 = {} = {}, T = {}\n",
-               collision_due ? "TC - T"
+               end.on_collision ? "TC - T"
                : limited     ? "the time left"
                              : "T0",
                step.length, gas.time);
   }
 
   // Stage 5 for the collision, then stage 7: while TC <= T, back to stage 4.
-  if (collision_due) {
+  if (end.on_collision) {
     const long long most = most_collisions_at_one_instant(gas.balls.size());
     long long at_this_instant = 0;
     while (control.next.kind != CollisionKind::none && control.next.time <= gas.time) {

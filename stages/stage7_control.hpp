@@ -12,13 +12,13 @@
 #pragma once
 
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
 #include "stage4_first_collision.hpp"
-#include "beyond/strategy.hpp"
 #include "stage5_new_coordinates.hpp"
 
 namespace gas {
@@ -29,7 +29,7 @@ struct Control {
   Gas gas;                          // the model: R, a, A1, A2, T, T0
   CentreLimits limits;              // from stage 3
   Collision next;                   // TC, K, N1, N2 of stage 4
-  FirstCollisionFinder finder;      // how stage 4 finds them (lesson 10)
+  std::unique_ptr<FirstCollisionFinder> finder;  // how stage 4 finds them
   bool must_find_collision = true;  // stage 4 from scratch before the next step
   Picture picture;                  // RS and the centres at T
   long long wall_collisions = 0;    // K = 1 or 2, so far
@@ -46,9 +46,9 @@ struct Control {
 };
 // [/anchor: control]
 
-// Sets the loop up for a gas read by stage 2, with stage 4 done the given way
-// (none: the way strategy_for picks for the number of balls).
-Control start_control(Gas gas, std::optional<Strategy> strategy = std::nullopt);
+// Sets the loop up for a gas read by stage 2, with stage 4 done by `finder`
+// (none: the article's scan; the faster ways are in stages/beyond/, lesson 10).
+Control start_control(Gas gas, std::unique_ptr<FirstCollisionFinder> finder = nullptr);
 
 // The most collisions allowed at one instant of model time. Real cascades at
 // one instant (a row of touching balls struck at one end) take about N

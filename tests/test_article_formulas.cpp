@@ -1142,9 +1142,13 @@ TEST_SUITE("article") {
   // Stages 5 and 7: T1 and the control rule.
 
   TEST_CASE("article T1 rule: T1 = T0 if TC > T + T0 and T1 = TC - T if TC < T + T0") {
-    CHECK(gas::step_length(10, 1, 12.5) == 1);        // TC > T + T0
-    CHECK(gas::step_length(10, 1, 10.25) == 0.25);    // TC < T + T0
-    CHECK(gas::step_length(10, 1, gas::never) == 1);  // nothing will ever collide
+    // T1 as the step's end: T + T1.
+    auto t1 = [](double now, double t0, double tc) {
+      return gas::step_end(now, t0, tc).time - now;
+    };
+    CHECK(t1(10, 1, 12.5) == 1);        // TC > T + T0
+    CHECK(t1(10, 1, 10.25) == 0.25);    // TC < T + T0
+    CHECK(t1(10, 1, gas::never) == 1);  // nothing will ever collide
     constexpr std::uint64_t seed = 471;
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0, 1);
@@ -1152,10 +1156,12 @@ TEST_SUITE("article") {
       INFO("seed " << seed << ", case " << i);
       const double now = 1000 * unit(rng), t0 = 2 * unit(rng) + 1e-3;
       const double tc = i % 10 == 0 ? now + t0 : now + 4 * unit(rng);
-      const double t1 = gas::step_length(now, t0, tc);
-      if (tc > now + t0) CHECK(t1 == t0);
-      if (tc < now + t0) CHECK(t1 == tc - now);
-      if (tc == now + t0) CHECK(t1 == tc - now);  // the case print leaves open
+      const gas::StepEnd end = gas::step_end(now, t0, tc);
+      // TC > T + T0: T1 = T0, the step ends at T + T0 with no collision.
+      if (tc > now + t0) CHECK((end.time == now + t0 && !end.on_collision));
+      // TC < T + T0: T1 = TC - T, the step ends at TC on the collision.
+      if (tc < now + t0) CHECK((end.time == tc && end.on_collision));
+      if (tc == now + t0) CHECK((end.time == tc && end.on_collision));  // left open
     }
   }
 
@@ -1164,10 +1170,12 @@ TEST_SUITE("article") {
     // Both branches give the same T1 in exact arithmetic, but only the second
     // computes the new velocities. The code takes the second: T1 = TC - T,
     // and the step ends exactly at TC with the collision carried out.
-    SUBCASE("step_length: TC - T, which in floating point need not equal T0") {
+    SUBCASE("step_end: T1 = TC - T, which in floating point need not equal T0") {
       const double now = 0.1, t0 = 0.2, tc = now + t0;  // tc = 0.30000000000000004
       REQUIRE(tc - now != t0);                          // the branches differ here
-      CHECK(gas::step_length(now, t0, tc) == tc - now);
+      const gas::StepEnd end = gas::step_end(now, t0, tc);
+      CHECK(end.on_collision);
+      CHECK(end.time - now == tc - now);
     }
     SUBCASE("take_step: the collision at T + T0 is carried out in this step") {
       // a = 1, A1 = 10: the centre at x = 5 moving at 1 meets x = 9 at TC = 4,

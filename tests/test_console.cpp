@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "program/console.hpp"
+#include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"
@@ -399,7 +400,7 @@ TEST_SUITE("console") {
     // The same 50 steps here (some end on a collision, so T < 50): the dump
     // is this gas's scene text, to the byte.
     gas::Control control =
-        gas::start_control(gas::read_scene_file(source_path("data/default.scene")));
+        gas::start_control_for(gas::read_scene_file(source_path("data/default.scene")));
     for (int k = 0; k < 50; ++k) gas::take_step(control, gas::never, nullptr);
     REQUIRE(control.wall_collisions + control.ball_collisions > 0);
     CHECK(read_file(dump) == gas::scene_text(control.gas));

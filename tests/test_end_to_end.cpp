@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "program/console.hpp"
+#include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
@@ -52,7 +53,7 @@ struct Run {
 // Runs the gas to model time `end` with display step `display_step`.
 Run run_until(gas::Gas g, double display_step, double end) {
   g.display_step = display_step;
-  Run run{{}, gas::start_control(g)};
+  Run run{{}, gas::start_control_for(g)};
   while (run.control.gas.time < end) {
     const gas::Step step = gas::take_step(run.control, end, nullptr);
     run.collisions.insert(run.collisions.end(), step.collisions.begin(),
@@ -107,7 +108,7 @@ TEST_SUITE("end-to-end") {
   TEST_CASE("B then as long again then B: a short run returns to its start") {
     const gas::Gas start =
         gas::parse_scene(gas::default_scene_text, gas::default_scene_name);
-    gas::Control control = gas::start_control(start);
+    gas::Control control = gas::start_control_for(start);
     long long collisions = 0;
     auto run_to = [&](double end) {
       while (control.gas.time < end)

@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"
@@ -101,7 +102,7 @@ void check_state(const gas::Control& control, const std::vector<int>& touched, b
 Log run_checked(const gas::Gas& start, long long most, double end) {
   gas::Gas g = start;
   g.display_step = 1e300;
-  gas::Control control = gas::start_control(g);
+  gas::Control control = gas::start_control_for(g);
   Log log;
   double last_time = control.gas.time;
   long long steps = 0;
@@ -161,7 +162,7 @@ struct Final {
 
 // Runs a scene to model time `end` (display step as in the scene).
 Final run_to(const gas::Gas& g, double end) {
-  Final f{gas::start_control(g), {}};
+  Final f{gas::start_control_for(g), {}};
   while (f.control.gas.time < end) {
     const gas::Step step = gas::take_step(f.control, end, nullptr);
     f.collisions.insert(f.collisions.end(), step.collisions.begin(),

@@ -23,6 +23,7 @@
 
 #include "program/console.hpp"
 #include "reference_gas.hpp"
+#include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
@@ -36,7 +37,7 @@ using gas::reference::reference_events;
 // that every step ends on a collision.
 std::vector<Event> program_events(gas::Gas gas, int count) {
   gas.display_step = 1e300;
-  gas::Control control = gas::start_control(gas);
+  gas::Control control = gas::start_control_for(gas);
   std::vector<Event> events;
   while (static_cast<int>(events.size()) < count) {
     for (const gas::Collision& c :

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "beyond/kinetic_theory.hpp"
+#include "beyond/strategy.hpp"
 #include "stage7_control.hpp"
 
 namespace {
@@ -78,7 +79,7 @@ struct Measured {
 
 Measured measure_run(int side, double eta, double warm_up, double length, double every,
                      unsigned seed) {
-  Control control = gas::start_control(lattice_gas(side, eta, seed));
+  Control control = gas::start_control_for(lattice_gas(side, eta, seed));
   run_until(control, warm_up);
   GasStatistics statistics(control.gas, tallies(control), 10);
   for (double t = warm_up + every; t <= warm_up + length + every / 2; t += every) {
@@ -201,7 +202,7 @@ TEST_SUITE("kinetic-theory") {
     g.height = 30;
     g.display_step = 1e9;
     g.balls = {{10, 10, 3, 4, 0}};
-    Control control = gas::start_control(g);
+    Control control = gas::start_control_for(g);
     GasStatistics statistics(control.gas, tallies(control), 10);
     run_until(control, 532);
     statistics.record(control.gas, tallies(control));
@@ -223,7 +224,7 @@ TEST_SUITE("kinetic-theory") {
     // curve, never farther, and the exact distribution for a finite N
     // differs from Maxwell-Boltzmann by about 0.2 / N = 0.002 in F, far below
     // what this test can see.)
-    Control control = gas::start_control(lattice_gas(10, 0.3, 3));
+    Control control = gas::start_control_for(lattice_gas(10, 0.3, 3));
     const double kT = gas::kinetic_energy(control.gas) / 100;
     // At the start the speeds are nowhere near: all of them at one speed.
     std::vector<double> speeds;
@@ -258,7 +259,7 @@ TEST_SUITE("kinetic-theory") {
     // after 30 to relax; its block error (at least 16 blocks of 18 time units
     // or more, ~15 collisions of each ball: independent enough) gives the
     // tolerance, three errors.
-    Control control = gas::start_control(lattice_gas(10, 0.3, 5));
+    Control control = gas::start_control_for(lattice_gas(10, 0.3, 5));
     run_until(control, 30);
     GasStatistics statistics(control.gas, tallies(control), 10);
     for (int t = 31; t <= 630; ++t) {

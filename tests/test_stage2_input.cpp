@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"
@@ -338,7 +339,7 @@ TEST_SUITE("stage2") {
 
     SUBCASE("after a run: the centres at T, written with 17 digits") {
       gas::Control control =
-          gas::start_control(gas::read_scene_file(source_path("data/crowd.scene")));
+          gas::start_control_for(gas::read_scene_file(source_path("data/crowd.scene")));
       while (control.gas.time < 123.25) gas::take_step(control, 123.25, nullptr);
       REQUIRE(control.wall_collisions + control.ball_collisions > 0);
       same(gas::parse_scene(gas::scene_text(control.gas), "round"), control.gas,

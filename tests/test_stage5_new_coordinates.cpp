@@ -1,4 +1,4 @@
-// Stage 5 of the article, "new coordinates": the step T1 (step_length), the
+// Stage 5 of the article, "new coordinates": the step T1 (step_end), the
 // shift of time that keeps the old centres RS (shift_time), the new
 // velocities of two balls by the article's VI (collide_balls), carrying out a
 // collision found by stage 4 (apply_collision), and the B key
@@ -69,21 +69,29 @@ Pair article_vi(const Ball& p, const Ball& q, double a) {
 }  // namespace
 
 TEST_SUITE("stage5") {
-  TEST_CASE("stage5 step_length is T0 or just up to the collision") {
-    CHECK(gas::step_length(10, 0.5, 12) == 0.5);          // TC > T + T0
-    CHECK(gas::step_length(10, 0.5, gas::never) == 0.5);  // no collision at all
-    CHECK(gas::step_length(10, 0.5, 10.25) == 0.25);      // TC - T
-    CHECK(gas::step_length(10, 0.5, 10.5) == 0.5);        // TC = T + T0: either way 0.5
-    CHECK(gas::step_length(10, 0.5, 10) == 0);            // a collision now
+  TEST_CASE("stage5 step_end: T1 is T0, or just up to the collision") {
+    // T1 = T0: the step ends at T + T0 and on no collision.
+    auto whole_step = [](gas::StepEnd end, double t, double t0) {
+      return end.time == t + t0 && !end.on_collision;
+    };
+    // T1 = TC - T: the step ends at exactly TC, on the collision.
+    auto up_to_collision = [](gas::StepEnd end, double tc) {
+      return end.time == tc && end.on_collision;
+    };
+    CHECK(whole_step(gas::step_end(10, 0.5, 12), 10, 0.5));          // TC > T + T0
+    CHECK(whole_step(gas::step_end(10, 0.5, gas::never), 10, 0.5));  // no collision
+    CHECK(up_to_collision(gas::step_end(10, 0.5, 10.25), 10.25));    // TC < T + T0
+    CHECK(up_to_collision(gas::step_end(10, 0.5, 10.5), 10.5));      // TC = T + T0
+    CHECK(up_to_collision(gas::step_end(10, 0.5, 10), 10));          // a collision now
     std::mt19937_64 rng(51);
     std::uniform_real_distribution<double> now(0, 100), step(0.01, 1), ahead(0, 2);
     for (int i = 0; i < 1000; ++i) {
       const double t = now(rng), t0 = step(rng), tc = t + ahead(rng);
-      const double t1 = gas::step_length(t, t0, tc);
+      const gas::StepEnd end = gas::step_end(t, t0, tc);
       if (tc > t + t0) {
-        CHECK(t1 == t0);
+        CHECK(whole_step(end, t, t0));
       } else {
-        CHECK(t1 == tc - t);
+        CHECK(up_to_collision(end, tc));
       }
     }
   }

@@ -145,7 +145,7 @@ TEST_SUITE("stage7") {
 
   // When T + (TC - T) rounds below TC, a step that decided on the rounded
   // sum would stop an ulp short of the collision, without it, and a step of
-  // ~2e-15 would follow. take_step decides by step_length's comparison and
+  // ~2e-15 would follow. take_step decides by step_end's comparison and
   // ends at TC itself.
   TEST_CASE("take_step: a step ends exactly at TC when T + (TC - T) rounds below TC") {
     gas::Control c = two_step_trap(4.7);

@@ -59,19 +59,21 @@
 
 namespace gas {
 
-class CellGrid {
+class CellGrid final : public FirstCollisionFinder {
  public:
   // Lays out the cells, puts every ball in its cell at gas.time, and predicts
   // every ball's walls, neighbours and first crossing.
-  void rebuild(const Gas& gas, const CentreLimits& limits);
+  void rebuild(const Gas& gas, const CentreLimits& limits) override;
 
   // The first collision, as find_first_collision(gas, limits) gives it.
   // Carries out (only in the grid's books) every cell crossing before it.
-  Collision first(const Gas& gas);
+  Collision first(const Gas& gas) override;
 
   // After stage 5 carried out `done` (rows of N1, and N2 for K = 3, rewritten):
   // those balls are predicted afresh.
-  void update(const Gas& gas, const Collision& done);
+  void update(const Gas& gas, const Collision& done) override;
+
+  const char* name() const override { return "grid"; }
 
   // The layout, for tests and the benchmark.
   int columns() const { return columns_; }

@@ -1,8 +1,8 @@
 // Stage 4 — first collision: the order of the article's scan, as a key.
 //
 // What this file does: gives every event stage 4 can find a key — its time,
-// then its place in the article's scan — and computes each event's time with
-// the scan's own formulas. A program that keeps its predictions from one
+// then its place in the article's scan. (Each event's time comes from the
+// scan's own expressions: wall_time and pair_time in stage 4.) A program that keeps its predictions from one
 // collision to the next (beyond/event_table.*, beyond/cell_grid.*) and takes
 // the event with the smallest key finds exactly the collision the scan finds:
 // the same TC to the last bit, and the same K, N1, N2 when events tie.
@@ -13,7 +13,6 @@
 // Assumptions: at most 2^31 - 1 balls (the numbers N1, N2 are ints).
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 
 #include "stage1_data.hpp"
@@ -41,30 +40,5 @@ inline bool comes_before(double a, std::uint64_t pa, double b, std::uint64_t pb)
   return a < b || (a == b && pa < pb);
 }
 // [/anchor: scan-place]
-
-// The scan's time for ball `number` (1..N) to reach a wall of kind K = 1 or
-// K = 2: the same expression as in find_first_collision, so the same bits.
-inline double wall_time(const Gas& gas, const CentreLimits& limits, int number,
-                        CollisionKind kind) {
-  const Ball& ball = gas.balls[static_cast<std::size_t>(number - 1)];
-  return kind == CollisionKind::horizontal_wall
-             ? ball.since + time_to_wall(ball.y, ball.vy, limits.y_min, limits.y_max)
-             : ball.since + time_to_wall(ball.x, ball.vx, limits.x_min, limits.x_max);
-}
-
-// The scan's time for balls n3 < n4 to meet (time_of_contact(N3, N4), in that
-// order, as the scan calls it: the order of the arguments matters to the
-// last bit, through the sums in its round-off floor).
-inline double pair_time(const Gas& gas, int n3, int n4) {
-  return time_of_contact(gas.balls[static_cast<std::size_t>(n3 - 1)],
-                         gas.balls[static_cast<std::size_t>(n4 - 1)], 2 * gas.radius);
-}
-
-// The last line of the scan: an event that round-off placed a hair before the
-// present is due now.
-inline Collision due_from(Collision first, double now) {
-  if (first.kind != CollisionKind::none) first.time = std::max(first.time, now);
-  return first;
-}
 
 }  // namespace gas

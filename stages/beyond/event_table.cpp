@@ -49,7 +49,7 @@ void EventTable::rebuild(const Gas& gas, const CentreLimits& limits) {
 }
 
 // [anchor: table-first]
-Collision EventTable::first(const Gas& gas) const {
+Collision EventTable::first(const Gas& gas) {
   const Entry* earliest = nullptr;
   for (const Entry& entry : next_) {
     if (entry.kind == CollisionKind::none) continue;

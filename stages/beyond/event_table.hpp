@@ -28,17 +28,19 @@
 
 namespace gas {
 
-class EventTable {
+class EventTable final : public FirstCollisionFinder {
  public:
   // Predicts every ball's earliest event from scratch: N(N + 1)/2 predictions.
-  void rebuild(const Gas& gas, const CentreLimits& limits);
+  void rebuild(const Gas& gas, const CentreLimits& limits) override;
 
   // The first collision, as find_first_collision(gas, limits) gives it.
-  Collision first(const Gas& gas) const;
+  Collision first(const Gas& gas) override;
 
   // After stage 5 carried out `done` (rows of N1, and N2 for K = 3, rewritten):
   // makes again the predictions that involve those balls.
-  void update(const Gas& gas, const Collision& done);
+  void update(const Gas& gas, const Collision& done) override;
+
+  const char* name() const override { return "table"; }
 
  private:
   // A ball's earliest event: a wall (partner 0) or a meeting with `partner`.

@@ -1,6 +1,9 @@
 // Stage 4 — the three ways to find the first collision. See beyond/strategy.hpp.
 #include "beyond/strategy.hpp"
 
+#include "beyond/cell_grid.hpp"
+#include "beyond/event_table.hpp"
+
 namespace gas {
 
 const char* strategy_name(Strategy strategy) {
@@ -22,30 +25,21 @@ std::optional<Strategy> strategy_named(std::string_view name) {
   return std::nullopt;
 }
 
-FirstCollisionFinder::FirstCollisionFinder(Strategy strategy) : strategy_(strategy) {
+std::unique_ptr<FirstCollisionFinder> make_finder(Strategy strategy) {
   switch (strategy) {
     case Strategy::scan:
-      way_.emplace<ArticleScan>();
-      break;
+      return std::make_unique<ArticleScan>();
     case Strategy::table:
-      way_.emplace<EventTable>();
-      break;
+      return std::make_unique<EventTable>();
     case Strategy::grid:
-      way_.emplace<CellGrid>();
-      break;
+      return std::make_unique<CellGrid>();
   }
+  return std::make_unique<ArticleScan>();
 }
 
-void FirstCollisionFinder::rebuild(const Gas& gas, const CentreLimits& limits) {
-  std::visit([&](auto& way) { way.rebuild(gas, limits); }, way_);
-}
-
-Collision FirstCollisionFinder::first(const Gas& gas) {
-  return std::visit([&](auto& way) { return way.first(gas); }, way_);
-}
-
-void FirstCollisionFinder::update(const Gas& gas, const Collision& done) {
-  std::visit([&](auto& way) { way.update(gas, done); }, way_);
+Control start_control_for(Gas gas, std::optional<Strategy> strategy) {
+  const Strategy chosen = strategy.value_or(strategy_for(gas.balls.size()));
+  return start_control(std::move(gas), make_finder(chosen));
 }
 
 }  // namespace gas

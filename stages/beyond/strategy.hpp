@@ -1,10 +1,10 @@
 // Stage 4 — first collision: the three ways to find it, and which to use.
 //
-// What this file does: puts the article's scan (stage4_first_collision.*),
-// the table of next events (beyond/event_table.*) and the cell grid
-// (beyond/cell_grid.*) behind one small interface — predict from scratch,
-// give the first collision, take note of a collision carried out — and picks
-// one for a scene by its number of balls.
+// What this file does: names the three ways — the article's scan
+// (stage4_first_collision.*), the table of next events (beyond/event_table.*)
+// and the cell grid (beyond/cell_grid.*), each a FirstCollisionFinder, stage
+// 4's small interface — picks one for a scene by its number of balls, and
+// makes it for stage 7.
 // Beyond the article: the article has only the scan. All three give the same
 // TC, K, N1, N2, bit for bit, ties included (suite `strategies`); they differ
 // only in how long they take (data/reports/speed-against-error.md).
@@ -16,15 +16,14 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string_view>
-#include <variant>
 
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
-#include "beyond/cell_grid.hpp"
-#include "beyond/event_table.hpp"
 #include "stage4_first_collision.hpp"
+#include "stage7_control.hpp"
 
 namespace gas {
 
@@ -55,33 +54,13 @@ inline Strategy strategy_for(std::size_t ball_count) {
 const char* strategy_name(Strategy strategy);
 std::optional<Strategy> strategy_named(std::string_view name);
 
-// The article's scan as a way of stage 4: it keeps nothing between calls.
-class ArticleScan {
- public:
-  void rebuild(const Gas&, const CentreLimits& limits) { limits_ = limits; }
-  Collision first(const Gas& gas) const { return find_first_collision(gas, limits_); }
-  void update(const Gas&, const Collision&) {}
+// A finder that does stage 4 the given way, for stage 7's Control
+// (start_control takes it).
+std::unique_ptr<FirstCollisionFinder> make_finder(Strategy strategy);
 
- private:
-  CentreLimits limits_;
-};
-
-// Stage 4 done one of the three ways.
-class FirstCollisionFinder {
- public:
-  explicit FirstCollisionFinder(Strategy strategy = Strategy::scan);
-  Strategy strategy() const { return strategy_; }
-
-  // Predicts from scratch (at the start, and after the B key).
-  void rebuild(const Gas& gas, const CentreLimits& limits);
-  // The first collision: TC, K, N1, N2, as find_first_collision gives it.
-  Collision first(const Gas& gas);
-  // After stage 5 carried out `done`.
-  void update(const Gas& gas, const Collision& done);
-
- private:
-  Strategy strategy_;
-  std::variant<ArticleScan, EventTable, CellGrid> way_;
-};
+// Stage 7's loop set up for `gas` with stage 4 done the given way, or, by
+// default, the way strategy_for picks for its number of balls (what the
+// program does).
+Control start_control_for(Gas gas, std::optional<Strategy> strategy = std::nullopt);
 
 }  // namespace gas

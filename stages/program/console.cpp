@@ -204,7 +204,7 @@ class ConsoleRun {
       : options_(options),
         terminal_(is_terminal(1) && !options.trace),
         interactive_(terminal_ && is_terminal(0) && !options.keys && !options.step),
-        control_(start_control(std::move(gas), options.strategy)),
+        control_(start_control_for(std::move(gas), options.strategy)),
         display_(stdout, terminal_, terminal_ && std::getenv("NO_COLOR") == nullptr) {
     const TerminalSize size = terminal_size().value_or(TerminalSize{});
     columns_ = options.columns.value_or(size.columns);

@@ -168,28 +168,28 @@ Gas crowd_gas() {
 struct EventLoop {
   Gas gas;
   gas::CentreLimits limits;
-  gas::FirstCollisionFinder finder;
+  std::unique_ptr<gas::FirstCollisionFinder> finder;
 
   EventLoop(const Gas& start, Strategy strategy)
-      : gas(start), limits(gas::centre_limits(start)), finder(strategy) {
-    finder.rebuild(gas, limits);
+      : gas(start), limits(gas::centre_limits(start)), finder(gas::make_finder(strategy)) {
+    finder->rebuild(gas, limits);
   }
   // The next collision, carried out; K = 0 if there is none.
   Collision step() {
-    const Collision c = finder.first(gas);
+    const Collision c = finder->first(gas);
     if (c.kind == CollisionKind::none) return c;
     gas.time = c.time;
     gas::apply_collision(gas, limits, c);
-    finder.update(gas, c);
+    finder->update(gas, c);
     return c;
   }
   // Every collision up to model time `end`, and the clock to it.
   void run_to(double end) {
-    for (Collision c = finder.first(gas); c.kind != CollisionKind::none && c.time <= end;
-         c = finder.first(gas)) {
+    for (Collision c = finder->first(gas); c.kind != CollisionKind::none && c.time <= end;
+         c = finder->first(gas)) {
       gas.time = c.time;
       gas::apply_collision(gas, limits, c);
-      finder.update(gas, c);
+      finder->update(gas, c);
     }
     gas.time = end;
   }
@@ -281,7 +281,7 @@ struct ProgramSpeed {
 
 ProgramSpeed run_program_loop(const Gas& gas, std::optional<Strategy> strategy,
                               double budget) {
-  gas::Control control = gas::start_control(gas, strategy);
+  gas::Control control = gas::start_control_for(gas, strategy);
   ProgramSpeed speed{strategy ? gas::strategy_name(*strategy) : "chosen by N"};
   const double start = cpu_seconds();
   while (true) {
@@ -524,10 +524,10 @@ ReversalRow reverse_stages(const std::string& name, const Gas& gas, int k) {
   const auto count = static_cast<long long>(k) * static_cast<long long>(gas.balls.size());
   double last = 0;
   for (long long i = 0; i < count; ++i) last = probe.step().time;
-  const double turn = (last + probe.finder.first(probe.gas).time) / 2;
+  const double turn = (last + probe.finder->first(probe.gas).time) / 2;
   Gas start = gas;
   start.display_step = 1e300;
-  gas::Control control = gas::start_control(start);
+  gas::Control control = gas::start_control_for(start);
   while (control.gas.time < turn) gas::take_step(control, turn, nullptr);
   gas::press_key(control, 'B');
   while (control.gas.time < 2 * turn) gas::take_step(control, 2 * turn, nullptr);
@@ -558,8 +558,8 @@ EventDriven run_event_driven(const Gas& start, double end) {
   const double starting_energy = gas::kinetic_energy(start);
   constexpr int stretches = 10;
   double collisions[stretches] = {}, impulse[stretches] = {};
-  for (Collision c = loop.finder.first(loop.gas);
-       c.kind != CollisionKind::none && c.time <= end; c = loop.finder.first(loop.gas)) {
+  for (Collision c = loop.finder->first(loop.gas);
+       c.kind != CollisionKind::none && c.time <= end; c = loop.finder->first(loop.gas)) {
     const int stretch =
         std::min(stretches - 1, static_cast<int>(c.time / end * stretches));
     const gas::Ball& ball = loop.gas.balls[static_cast<std::size_t>(c.first - 1)];
@@ -574,7 +574,7 @@ EventDriven run_event_driven(const Gas& start, double end) {
     }
     loop.gas.time = c.time;
     gas::apply_collision(loop.gas, loop.limits, c);
-    loop.finder.update(loop.gas, c);
+    loop.finder->update(loop.gas, c);
   }
   r.seconds = cpu_since(began);
   r.energy_error =
