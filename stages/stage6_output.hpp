@@ -19,7 +19,6 @@
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
 #include "stage5_new_coordinates.hpp"
-#include "beyond/kinetic_theory.hpp"
 
 namespace gas {
 
@@ -49,52 +48,34 @@ void draw_balls(TextScreen& screen, const Picture& picture, double radius,
 // Trajectories screen: a segment from each old centre to its new centre.
 void draw_trails(TextScreen& screen, const Picture& picture, const Tone& tone);
 
-// The figures of the statistics screen (and of --csv).
+// The figures the article's third screen can print, each a property of the
+// gas now (and the heading above every frame).
 struct Figures {
   double time = 0;                // T
   double display_step = 0;        // T0
   long long wall_collisions = 0;  // K = 1 and K = 2 so far
   long long ball_collisions = 0;  // K = 3 so far
-  double mean_speed = 0;          // mean of |v|
+  std::size_t balls = 0;          // N
+  double mean_speed = 0;          // mean of |v|, "the mean speed for example"
   double energy = 0;              // kinetic energy, unit mass
   double energy_drift = 0;        // (E - E at start) / E at start; 0 if E at start is 0
   Point momentum;                 // total momentum, unit mass
-  // Beyond the article, kinetic theory (lesson 11): what it predicts, and
-  // the time averages since the start to set beside it.
-  std::size_t balls = 0;             // N
-  double rms_speed = 0;              // sqrt(2 E / N), now
-  KineticTheory theory;              // the predictions for this gas
-  Average average_mean_speed;        // the mean speed, averaged over time
-  Average pressure;                  // from the push on the walls
-  Average compressibility;           // Z = P (A1 - 2a)(A2 - 2a) / (N kT)
-  Average collision_rate;            // collisions of two balls per ball per time
-  double mean_free_path = not_known; // average mean speed / collision rate
-  std::vector<double> speed_fractions;  // the histogram (GasStatistics)
-  double bin_width = 0;                 // of its bins
-  double fraction_beyond = 0;           // faster than its last bin
 };
 
 Figures measure(const Gas& gas, double starting_energy, long long wall_collisions,
                 long long ball_collisions);
 
-// Adds the time averages and the histogram of `statistics` to the figures.
-void add_statistics(Figures& figures, const GasStatistics& statistics);
+// Writes `text` from column 2 of `row`, cut at the border.
+void write_text(TextScreen& screen, int row, const std::string& text);
 
-// Statistics screen: the figures at fixed places inside the border, each
-// beside its prediction, and under them the histogram of speeds with the
-// Maxwell-Boltzmann curve, as far as the screen has room.
-void draw_figures(TextScreen& screen, const Figures& figures);
-
-// The histogram part of it, in rows first_row ... last_row.
-void draw_histogram(TextScreen& screen, const Figures& figures, int first_row,
-                    int last_row);
+// Statistics screen: wipes the inside and writes the lines of figures at
+// fixed places, one a row from the top, as far as the screen has room. What
+// the lines say is the caller's (the program shows kinetic theory's figures,
+// stages/beyond/kinetic_screen.hpp).
+void draw_figures(TextScreen& screen, const std::vector<std::string>& lines);
 
 // The one-line heading above every frame.
 std::string status_line(const Figures& figures, ScreenMode mode, bool stopped);
-
-// The CSV header and one row of figures.
-std::string csv_header();
-std::string csv_row(const Figures& figures);
 
 // Sends frames to standard output. On a terminal: draws in place with ANSI
 // escapes, sending only the characters that changed (with colour when

@@ -60,12 +60,7 @@ void find_next(Control& control, std::FILE* trace) {
 // Stage 5's velocity part, as the loop calls it.
 void carry_out(Control& control, Step& step, std::FILE* trace) {
   const Collision& c = control.next;
-  // The wall's share of the bounce (lesson 11): 2 |v_normal| before it.
-  const Ball& first = control.gas.balls[static_cast<std::size_t>(c.first - 1)];
-  if (c.kind == CollisionKind::horizontal_wall)
-    control.horizontal_wall_push += 2 * std::abs(first.vy);
-  if (c.kind == CollisionKind::vertical_wall)
-    control.vertical_wall_push += 2 * std::abs(first.vx);
+  if (control.observer != nullptr) control.observer->before_collision(control.gas, c);
   apply_collision(control.gas, control.limits, c);
   control.finder->update(control.gas, c);
   if (c.kind == CollisionKind::balls) {

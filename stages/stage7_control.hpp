@@ -23,6 +23,16 @@
 
 namespace gas {
 
+// Beyond the article, one narrow hook: an observer is told of each collision
+// just before stage 5 carries it out, with the gas as it was. Kinetic theory
+// adds up the walls' push this way (stages/beyond/, lesson 11); the stages
+// themselves need none.
+class CollisionObserver {
+ public:
+  virtual ~CollisionObserver() = default;
+  virtual void before_collision(const Gas& gas, const Collision& collision) = 0;
+};
+
 // Everything the control loop keeps between two steps.
 // [anchor: control]
 struct Control {
@@ -34,12 +44,8 @@ struct Control {
   Picture picture;                  // RS and the centres at T
   long long wall_collisions = 0;    // K = 1 or 2, so far
   long long ball_collisions = 0;    // K = 3, so far
-  // Beyond the article, for the statistics screen (lesson 11): the momentum
-  // the walls have received, unit mass. A bounce reverses the velocity's
-  // component across the wall, so the wall receives 2 |v_normal|.
-  double horizontal_wall_push = 0;  // K = 1: the sum of 2 |vy|
-  double vertical_wall_push = 0;    // K = 2: the sum of 2 |vx|
   double starting_energy = 0;       // kinetic energy at T = 0, for the drift
+  CollisionObserver* observer = nullptr;  // told of each collision, if any
   int tone = 0;                     // the base colour's tone; B changes it
   bool stopped = false;             // S stops, R starts again
   bool ended = false;               // E

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "program/console.hpp"
+#include "beyond/kinetic_screen.hpp"
 #include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"

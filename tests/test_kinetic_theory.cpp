@@ -61,9 +61,18 @@ Gas lattice_gas(int side, double eta, unsigned seed) {
   return g;
 }
 
-Tallies tallies(const Control& c) {
-  return {c.gas.time, c.horizontal_wall_push, c.vertical_wall_push, c.ball_collisions};
-}
+// A run of stage 7 with kinetic theory's observer on its hook, as the
+// program runs it: the walls' push added up collision by collision.
+struct ObservedRun {
+  Control control;
+  gas::WallPush push;
+  explicit ObservedRun(Gas g) : control(gas::start_control_for(std::move(g))) {
+    control.observer = &push;
+  }
+  ObservedRun(const ObservedRun&) = delete;
+  ObservedRun& operator=(const ObservedRun&) = delete;
+  Tallies tallies() const { return gas::tallies(control, push); }
+};
 
 void run_until(Control& control, double time) {
   while (control.gas.time < time) gas::take_step(control, time, nullptr);
@@ -79,12 +88,13 @@ struct Measured {
 
 Measured measure_run(int side, double eta, double warm_up, double length, double every,
                      unsigned seed) {
-  Control control = gas::start_control_for(lattice_gas(side, eta, seed));
+  ObservedRun run(lattice_gas(side, eta, seed));
+    Control& control = run.control;
   run_until(control, warm_up);
-  GasStatistics statistics(control.gas, tallies(control), 10);
+  GasStatistics statistics(control.gas, run.tallies(), 10);
   for (double t = warm_up + every; t <= warm_up + length + every / 2; t += every) {
     run_until(control, t);
-    statistics.record(control.gas, tallies(control));
+    statistics.record(control.gas, run.tallies());
   }
   Measured m;
   m.kT = gas::kinetic_energy(control.gas) / (side * side);
@@ -202,10 +212,11 @@ TEST_SUITE("kinetic-theory") {
     g.height = 30;
     g.display_step = 1e9;
     g.balls = {{10, 10, 3, 4, 0}};
-    Control control = gas::start_control_for(g);
-    GasStatistics statistics(control.gas, tallies(control), 10);
+    ObservedRun run(g);
+    Control& control = run.control;
+    GasStatistics statistics(control.gas, run.tallies(), 10);
     run_until(control, 532);
-    statistics.record(control.gas, tallies(control));
+    statistics.record(control.gas, run.tallies());
     CHECK(statistics.compressibility().value == doctest::Approx(1).epsilon(1e-12));
     CHECK(statistics.pressure().value ==
           doctest::Approx(12.5 / (38.0 * 28.0)).epsilon(1e-12));
@@ -259,12 +270,13 @@ TEST_SUITE("kinetic-theory") {
     // after 30 to relax; its block error (at least 16 blocks of 18 time units
     // or more, ~15 collisions of each ball: independent enough) gives the
     // tolerance, three errors.
-    Control control = gas::start_control_for(lattice_gas(10, 0.3, 5));
+    ObservedRun run(lattice_gas(10, 0.3, 5));
+    Control& control = run.control;
     run_until(control, 30);
-    GasStatistics statistics(control.gas, tallies(control), 10);
+    GasStatistics statistics(control.gas, run.tallies(), 10);
     for (int t = 31; t <= 630; ++t) {
       run_until(control, t);
-      statistics.record(control.gas, tallies(control));
+      statistics.record(control.gas, run.tallies());
     }
     const Average mean = statistics.mean_speed();
     const gas::KineticTheory theory = gas::kinetic_theory(control.gas);

@@ -81,6 +81,16 @@ KineticTheory kinetic_theory(const Gas& gas) {
   return t;
 }
 
+void WallPush::before_collision(const Gas& gas, const Collision& c) {
+  const Ball& first = gas.balls[static_cast<std::size_t>(c.first - 1)];  // N1
+  if (c.kind == CollisionKind::horizontal_wall) horizontal += 2 * std::abs(first.vy);
+  if (c.kind == CollisionKind::vertical_wall) vertical += 2 * std::abs(first.vx);
+}
+
+Tallies tallies(const Control& control, const WallPush& push) {
+  return {control.gas.time, push.horizontal, push.vertical, control.ball_collisions};
+}
+
 void GasStatistics::Sums::add(const Sums& other) {
   duration += other.duration;
   mean_speed_time += other.mean_speed_time;

@@ -1,11 +1,12 @@
-// Stage 6 — the statistics screen's physics: kinetic theory, and the running
-// averages that are compared with it.
+// Kinetic theory (beyond the article): the statistics screen's physics, and
+// the running averages that are compared with it.
 //
 // What this file does: predicts, from the number of balls, their radius, the
 // table and the energy alone, what kinetic theory says the gas should show —
 // the 2D Maxwell-Boltzmann speeds, the pressure of a hard-disk fluid, the
 // collision rate and the mean free path — and keeps the measured figures the
-// screen sets beside them: a speed histogram, and time averages with their
+// screen sets beside them: the push on the walls (fed by stage 7's one hook,
+// CollisionObserver), a speed histogram, and time averages with their
 // statistical errors.
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas, the mean speed for example"). The theory is beyond
@@ -22,6 +23,8 @@
 #include <vector>
 
 #include "stage1_data.hpp"
+#include "stage4_first_collision.hpp"
+#include "stage7_control.hpp"
 
 namespace gas {
 
@@ -60,7 +63,19 @@ double henderson_contact_value(double area_fraction);
 // has P * area = N kT exactly, walls and all (lesson 11).
 double measured_area(const Gas& gas);
 
-// What stage 7 has counted since the start: the momentum given to the walls
+// The momentum the walls have received (unit mass), added up collision by
+// collision through stage 7's hook: a bounce reverses the velocity's
+// component across the wall, so the wall receives 2 |v_normal|.
+// [anchor: wall-push]
+class WallPush final : public CollisionObserver {
+ public:
+  void before_collision(const Gas& gas, const Collision& collision) override;
+  double horizontal = 0;  // K = 1: the sum of 2 |vy| (walls y = 0, y = A2)
+  double vertical = 0;    // K = 2: the sum of 2 |vx| (walls x = 0, x = A1)
+};
+// [/anchor: wall-push]
+
+// What has been counted since the start: the momentum given to the walls
 // and the collisions of two balls (unit mass).
 struct Tallies {
   double time = 0;                  // T
@@ -68,6 +83,10 @@ struct Tallies {
   double vertical_wall_push = 0;    // sum of 2 |vx| over K = 2 (walls x = 0, x = A1)
   long long ball_collisions = 0;    // K = 3
 };
+
+// The tallies of a run: stage 7's clock and count of K = 3, and the push that
+// `push`, its observer, has added up.
+Tallies tallies(const Control& control, const WallPush& push);
 
 // A time average and its statistical error (one standard error, from block
 // averages); the error is not known (NaN) before there are enough blocks.

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 
+#include "beyond/kinetic_screen.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "program/terminal.hpp"
@@ -222,6 +223,7 @@ class ConsoleRun {
     }
     // The statistics screen's averages start now; a histogram bin for every two
     // columns, at most 40.
+    control_.observer = &wall_push_;
     statistics_.emplace(control_.gas, tallies(), std::clamp(columns_ / 2 - 2, 1, 40));
     events_.open(options.events_path);
     csv_.open(options.csv_path);
@@ -320,16 +322,16 @@ class ConsoleRun {
   }
 
   // What stage 7 has counted, for the statistics (lesson 11).
-  Tallies tallies() const {
-    return {control_.gas.time, control_.horizontal_wall_push,
-            control_.vertical_wall_push, control_.ball_collisions};
-  }
+  Tallies tallies() const { return gas::tallies(control_, wall_push_); }
 
   Figures figures() const {
-    Figures f = measure(control_.gas, control_.starting_energy, control_.wall_collisions,
-                        control_.ball_collisions);
-    add_statistics(f, *statistics_);
-    return f;
+    return measure(control_.gas, control_.starting_energy, control_.wall_collisions,
+                   control_.ball_collisions);
+  }
+
+  // Kinetic theory's figures, for the statistics screen and --csv (lesson 11).
+  KineticFigures kinetic() const {
+    return kinetic_figures(control_.gas, *statistics_);
   }
 
   void record(const Step& step) {
@@ -340,7 +342,7 @@ class ConsoleRun {
                    c.first, c.second);
       }
     }
-    if (csv_) fmt::print(csv_.get(), "{}\n", csv_row(figures()));
+    if (csv_) fmt::print(csv_.get(), "{}\n", csv_row(figures(), kinetic()));
     if (options_.bell && !step.collisions.empty()) {
       const auto now = std::chrono::steady_clock::now();
       if (now - last_bell_ >= std::chrono::duration<double>(bell_interval_seconds)) {
@@ -364,7 +366,7 @@ class ConsoleRun {
         draw_trails(screen_, control_.picture, tone);
         break;
       case ScreenMode::stats:
-        draw_figures(screen_, figures);
+        draw_kinetic_figures(screen_, figures, kinetic());
         break;
     }
     display_.show(screen_, status_line(figures, options_.mode, control_.stopped), tone);
@@ -379,6 +381,7 @@ class ConsoleRun {
   int columns_ = 0;
   int rows_ = 0;
   std::optional<long long> frame_limit_;
+  WallPush wall_push_;  // kinetic theory's sums, told of each collision by stage 7
   std::optional<GasStatistics> statistics_;
   OutputFile events_;
   OutputFile csv_;
