@@ -48,6 +48,29 @@ std::optional<long long> frame_limit(const Options& options, bool terminal) {
   return std::max(default_plain_frames, keys);
 }
 
+// --trace, before the loop: what stages 1, 2 and 3 have set up — the
+// article's variables with their values, where the scene was read from, the
+// limits G1 and G2 of the centres, and the screen.
+void trace_preparation(const Gas& gas, const std::string& scene_name,
+                       const TextScreen& screen, ScreenMode mode) {
+  const std::size_t n = gas.balls.size();
+  fmt::print("stage 1  variables and data: N={} a={} A1={} A2={} T={} T0={}\n", n,
+             gas.radius, gas.width, gas.height, gas.time, gas.display_step);
+  fmt::print("stage 2  input: {} ball{} from {}\n", n, n == 1 ? "" : "s", scene_name);
+  const CentreLimits limits = centre_limits(gas);
+  fmt::print(
+      "stage 3  screen preparation: a={} <= x <= G1=A1-a={}, a <= y <= G2=A2-a={}\n",
+      limits.x_min, limits.x_max, limits.y_max);
+  fmt::print("stage 3  screen preparation: {} x {} characters, border included\n",
+             screen.columns, screen.rows);
+  if (mode == ScreenMode::stats) {
+    fmt::print("stage 3  screen preparation: figures only, no table\n");
+  } else {
+    fmt::print("stage 3  screen preparation: column {}, row {}\n", screen.column_width,
+               screen.row_height);
+  }
+}
+
 // Beyond the article (lesson 11): the figures of the statistics screen and of
 // --csv, with their time averages since the start. All that the program asks
 // of kinetic theory is asked here.
@@ -99,6 +122,8 @@ class ConsoleRun {
   // 4 and 5 take one display step (back to stage 4 at every collision); then
   // stage 6 draws it. Returns the exit status.
   int run() {
+    if (options_.trace)
+      trace_preparation(control_.gas, scene_name(), screen_, options_.mode);
     if (terminal_) install_interrupt_flag();
     KeySource keys(options_, keyboard_);
     std::FILE* const trace = options_.trace ? stdout : nullptr;
@@ -138,6 +163,12 @@ class ConsoleRun {
   }
 
  private:
+  // Where stage 2 read the scene: its file, or the default scene built in.
+  std::string scene_name() const {
+    return options_.scene_path ? *options_.scene_path
+                               : fmt::format("{} (built in)", default_scene_name);
+  }
+
   // Carries out the keys in `keys`; false once E is pressed.
   bool press_all(const std::string& keys) {
     for (const char key : keys) {
