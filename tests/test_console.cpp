@@ -9,6 +9,8 @@
 //   frames are five frames, each a status line and a bordered screen.
 // - Scripted runs of every teaching scene against golden outputs in
 //   data/golden/runs/ (balls, trails, stats, the keys ..B.., --trace).
+// - --trace says what stages 1, 2 and 3 set up (the variables, the scene
+//   read, G1, G2 and the screen) before the first stage 4.
 // - The files: --events and --csv (headers, one row per collision and per
 //   frame), --dump (a scene read_scene_file accepts, equal to the same run
 //   done in this process).
@@ -304,6 +306,49 @@ TEST_SUITE("console") {
       for (const Frame& frame : frames_of(run.out)) CHECK(bordered(frame.screen));
       check_golden("golden/runs/" + script.golden + ".txt", run.out);
     }
+  }
+
+  TEST_CASE(
+      "--trace: stages 1, 2 and 3 before the first stage 4, with the scene's values") {
+    // Head-on: N = 2, a = 4, the table A1 x A2 = 256 x 192, T0 = 1, so the
+    // centres stay within 4 <= x <= 252 and 4 <= y <= 188. On 40 x 10
+    // characters (12 rows less the status line and the cursor) a column is
+    // max(256 / 38, 192 / (2 * 8)) = 12 long and a row 24; the table then
+    // takes 22 x 8 characters inside the border.
+    const auto run = run_program({"data/head-on.scene", "--trace", "--frames", "1",
+                                  "--cols", "40", "--rows", "12"});
+    REQUIRE(run.status == 0);
+    const std::vector<std::string> lines = lines_of(run.out);
+    const auto stage4 = std::find_if(lines.begin(), lines.end(), [](const auto& line) {
+      return line.rfind("stage 4  ", 0) == 0;
+    });
+    REQUIRE(stage4 != lines.end());
+    const std::vector<std::string> before_stage4(lines.begin(), stage4);
+    const std::vector<std::string> expected = {
+        "stage 1  variables and data: N=2 a=4 A1=256 A2=192 T=0 T0=1",
+        "stage 2  input: 2 balls from data/head-on.scene",
+        "stage 3  screen preparation: a=4 <= x <= G1=A1-a=252, a <= y <= G2=A2-a=188",
+        "stage 3  screen preparation: 24 x 10 characters, border included",
+        "stage 3  screen preparation: column 12, row 24",
+    };
+    CHECK(before_stage4 == expected);
+
+    // The built-in scene is named as the file it was built from; one ball is
+    // one ball; the statistics screen has no table to measure.
+    const auto built_in = run_program({"--trace", "--frames", "1"});
+    REQUIRE(lines_of(built_in.out).size() > 1);
+    CHECK(lines_of(built_in.out)[1] ==
+          "stage 2  input: 7 balls from data/default.scene (built in)");
+    const auto stats = run_program({"data/one-ball.scene", "--trace", "--frames", "1",
+                                    "--mode", "stats", "--cols", "30", "--rows", "9"});
+    const std::vector<std::string> stats_lines = lines_of(stats.out);
+    REQUIRE(stats_lines.size() > 4);
+    CHECK(stats_lines[0] ==
+          "stage 1  variables and data: N=1 a=4 A1=256 A2=192 T=0 T0=2");
+    CHECK(stats_lines[1] == "stage 2  input: 1 ball from data/one-ball.scene");
+    CHECK(stats_lines[3] ==
+          "stage 3  screen preparation: 30 x 7 characters, border included");
+    CHECK(stats_lines[4] == "stage 3  screen preparation: figures only, no table");
   }
 
   TEST_CASE("the keys ..B..: after B the balls retrace their steps in the other tone") {

@@ -1,0 +1,251 @@
+// The command line of `gas`. See options.hpp.
+#include "program/options.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string_view>
+
+#include "stage3_screen.hpp"
+
+namespace gas {
+namespace {
+
+long long whole_number(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty()) {
+    throw UsageError(fmt::format("{} takes a whole number, not '{}'", option, text));
+  }
+  return value;
+}
+
+double real_number(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || !std::isfinite(value)) {
+    throw UsageError(fmt::format("{} takes a finite number, not '{}'", option, text));
+  }
+  return value;
+}
+
+// The command line, read one argument at a time. An option's value is either
+// attached to it ("--frames=5") or the argument after it ("--frames 5").
+class ArgumentReader {
+ public:
+  explicit ArgumentReader(const std::vector<std::string>& arguments)
+      : arguments_(arguments) {}
+
+  // Moves to the next argument; false when none is left.
+  bool next() {
+    if (next_ >= arguments_.size()) return false;
+    name_ = arguments_[next_++];
+    attached_.reset();
+    if (name_.rfind("--", 0) == 0) {
+      if (const auto equals = name_.find('='); equals != std::string::npos) {
+        attached_ = name_.substr(equals + 1);
+        name_.resize(equals);
+      }
+    }
+    return true;
+  }
+
+  // The argument without its attached value: an option's name, or a scene.
+  const std::string& name() const { return name_; }
+
+  // The option's value: the attached one, else the next argument.
+  std::string value() {
+    if (attached_) return *attached_;
+    if (next_ >= arguments_.size())
+      throw UsageError(fmt::format("{} needs a value", name_));
+    return arguments_[next_++];
+  }
+
+  // A flag takes no value: an attached one is refused.
+  void no_value() const {
+    if (attached_) throw UsageError(fmt::format("{} takes no value", name_));
+  }
+
+ private:
+  const std::vector<std::string>& arguments_;
+  std::size_t next_ = 0;                 // the first argument not yet read
+  std::string name_;                     // the argument being read
+  std::optional<std::string> attached_;  // its "=value", if any
+};
+
+// Reads one option (its value, if it takes one) into the options.
+using OptionReader = void (*)(ArgumentReader&, Options&);
+
+// A flag: --step, --trace, --bell, --help.
+template <bool Options::*flag>
+void read_flag(ArgumentReader& reader, Options& options) {
+  reader.no_value();
+  options.*flag = true;
+}
+
+// A text kept as it is: --keys and the names of the files to write.
+template <std::optional<std::string> Options::*text>
+void read_text(ArgumentReader& reader, Options& options) {
+  options.*text = reader.value();
+}
+
+// --frames N: a whole number of display steps, not negative.
+void read_frames(ArgumentReader& reader, Options& options) {
+  const std::string text = reader.value();
+  const long long frames = whole_number(reader.name(), text);
+  if (frames < 0)
+    throw UsageError(fmt::format("--frames must not be negative, not {}", frames));
+  options.frames = frames;
+}
+
+// --until T: a moment of model time, not negative.
+void read_until(ArgumentReader& reader, Options& options) {
+  const std::string text = reader.value();
+  const double until = real_number(reader.name(), text);
+  if (until < 0)
+    throw UsageError(fmt::format("--until must not be negative, not {}", until));
+  options.until = until;
+}
+
+// --mode M: one of the three screens of stage 6.
+void read_mode(ArgumentReader& reader, Options& options) {
+  const std::string name = reader.value();
+  for (const ScreenMode mode :
+       {ScreenMode::balls, ScreenMode::trails, ScreenMode::stats}) {
+    if (name == mode_name(mode)) {
+      options.mode = mode;
+      return;
+    }
+  }
+  throw UsageError(fmt::format("--mode takes balls, trails or stats, not '{}'", name));
+}
+
+// --cols N, --rows N: the screen's size in characters, from `smallest` to 10000.
+template <std::optional<int> Options::*size, int smallest>
+void read_screen_size(ArgumentReader& reader, Options& options) {
+  const std::string text = reader.value();
+  const long long value = whole_number(reader.name(), text);
+  if (value < smallest || value > 10000) {
+    throw UsageError(fmt::format("{} takes a number from {} to 10000, not {}",
+                                 reader.name(), smallest, value));
+  }
+  options.*size = static_cast<int>(value);
+}
+
+// --strategy S: how stage 4 finds the first collision.
+void read_strategy(ArgumentReader& reader, Options& options) {
+  const std::string name = reader.value();
+  options.strategy = strategy_named(name);
+  if (!options.strategy)
+    throw UsageError(fmt::format("--strategy takes scan, table or grid, not '{}'", name));
+}
+
+// Every option of the command line, and how it is read.
+struct KnownOption {
+  std::string_view name;
+  OptionReader read;
+};
+constexpr KnownOption known_options[] = {
+    {"--frames", read_frames},
+    {"--until", read_until},
+    {"--keys", read_text<&Options::keys>},
+    {"--mode", read_mode},
+    {"--events", read_text<&Options::events_path>},
+    {"--dump", read_text<&Options::dump_path>},
+    {"--csv", read_text<&Options::csv_path>},
+    {"--cols", read_screen_size<&Options::columns, smallest_columns>},
+    // The screen's rows and two more: the status line, and the cursor below.
+    {"--rows", read_screen_size<&Options::rows, smallest_rows + 2>},
+    {"--strategy", read_strategy},
+    {"--step", read_flag<&Options::step>},
+    {"--trace", read_flag<&Options::trace>},
+    {"--bell", read_flag<&Options::bell>},
+    {"--help", read_flag<&Options::help>},
+    {"-h", read_flag<&Options::help>},
+};
+
+// How the named option is read; none for a name that is no option's.
+OptionReader reader_of(const std::string& name) {
+  for (const KnownOption& option : known_options) {
+    if (option.name == name) return option.read;
+  }
+  return nullptr;
+}
+
+// An argument that is no option's name: the scene, or a mistyped option.
+void read_scene_path(const std::string& argument, Options& options) {
+  if (argument.size() > 1 && argument[0] == '-')
+    throw UsageError(fmt::format("unknown option '{}'", argument));
+  if (options.scene_path) {
+    throw UsageError(
+        fmt::format("one scene only: '{}' and '{}'", *options.scene_path, argument));
+  }
+  options.scene_path = argument;
+}
+
+}  // namespace
+
+Options parse_options(const std::vector<std::string>& arguments) {
+  Options options;
+  ArgumentReader reader(arguments);
+  while (reader.next()) {
+    if (const OptionReader read = reader_of(reader.name())) {
+      read(reader, options);
+    } else {
+      read_scene_path(reader.name(), options);
+    }
+  }
+  if (options.frames && options.until)
+    throw UsageError("--frames and --until exclude each other");
+  return options;
+}
+
+std::string help_text() {
+  return R"(gas - the billiard-ball gas of "Gas on the display" (Kvant 1989), in a terminal
+
+usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|stats]
+           [--events FILE] [--dump FILE] [--csv FILE] [--cols N] [--rows N]
+           [--step] [--trace] [--bell] [--strategy scan|table|grid] [--help]
+
+  SCENE            a scene file (see data/README.md); none: the built-in default scene
+  --frames N       take N display steps, then exit
+  --until T        run until model time T exactly, then exit
+  --keys KEYS      press one key per display step ('.' for none) instead of the keyboard
+  --mode M         the screen: balls (moving balls), trails (trajectories),
+                   stats (figures only); default balls
+  --events FILE    write every collision to FILE as CSV: T,K,N1,N2
+  --dump FILE      at exit, write the gas to FILE as a scene file
+  --csv FILE       write the statistics of every display step to FILE as CSV
+  --cols N         screen width in characters (default: the terminal's, else 80)
+  --rows N         screen height in characters (default: the terminal's, else 24)
+  --step           wait for Enter after every display step (a line may hold keys)
+  --trace          print each stage of the article as it runs, with T, T1, TC, K, N1, N2
+  --bell           ring the terminal bell on collisions
+  --strategy S     how stage 4 finds the first collision: scan (the article's),
+                   table (each ball's next event) or grid (cells and an event
+                   queue); the same collisions, at different speeds. Default:
+                   scan up to )" +
+         std::to_string(most_balls_for_scan) + R"( balls, table up to )" +
+         std::to_string(most_balls_for_table) + R"(, grid beyond
+  --help           show this text
+
+keys (in a terminal, without Enter): S stop, R run, B reverse all velocities,
+  > double T0, < halve T0, 0 redraw the screen, E end.
+When the output is not a terminal, every frame is printed whole, headed by a
+status line; with no --frames or --until the run stops after 100 frames (or
+as many as --keys has keys, if more).
+Exit status: 0 success, 2 bad usage or bad scene, 1 any other failure.
+)";
+}
+
+}  // namespace gas
