@@ -72,7 +72,8 @@ Collision find_first_collision(const Gas& gas, const CentreLimits& limits) {
   for (int i = 1; i <= n; ++i) {
     const double horizontal = wall_time(gas, limits, i, CollisionKind::horizontal_wall);
     const double vertical = wall_time(gas, limits, i, CollisionKind::vertical_wall);
-    if (horizontal < first.time) first = {horizontal, CollisionKind::horizontal_wall, i, 0};
+    if (horizontal < first.time)
+      first = {horizontal, CollisionKind::horizontal_wall, i, 0};
     if (vertical < first.time) first = {vertical, CollisionKind::vertical_wall, i, 0};
   }
 

@@ -95,8 +95,8 @@ Figures measure(const Gas& gas, double starting_energy, long long wall_collision
 }
 
 void write_text(TextScreen& screen, int row, const std::string& text) {
-  for (std::size_t k = 0;
-       k < text.size() && static_cast<int>(k) + 3 < screen.columns - 1; ++k) {
+  for (std::size_t k = 0; k < text.size() && static_cast<int>(k) + 3 < screen.columns - 1;
+       ++k) {
     screen.at({2 + static_cast<int>(k), row}) = text[k];
   }
 }

@@ -97,8 +97,8 @@ Step take_step(Control& control, double time_limit, std::FILE* trace) {
   if (trace != nullptr) {
     fmt::print(trace, "stage 5  new coordinates: T1 = {} = {}, T = {}\n",
                end.on_collision ? "TC - T"
-               : limited     ? "the time left"
-                             : "T0",
+               : limited        ? "the time left"
+                                : "T0",
                step.length, gas.time);
   }
 

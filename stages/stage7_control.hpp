@@ -36,19 +36,24 @@ class CollisionObserver {
 // Everything the control loop keeps between two steps.
 // [anchor: control]
 struct Control {
+  // The model and stage 4.
   Gas gas;                          // the model: R, a, A1, A2, T, T0
   CentreLimits limits;              // from stage 3
   Collision next;                   // TC, K, N1, N2 of stage 4
-  std::unique_ptr<FirstCollisionFinder> finder;  // how stage 4 finds them
   bool must_find_collision = true;  // stage 4 from scratch before the next step
-  Picture picture;                  // RS and the centres at T
-  long long wall_collisions = 0;    // K = 1 or 2, so far
-  long long ball_collisions = 0;    // K = 3, so far
-  double starting_energy = 0;       // kinetic energy at T = 0, for the drift
+  std::unique_ptr<FirstCollisionFinder> finder;  // how stage 4 finds them
+
+  // What the picture and the figures need.
+  Picture picture;                        // RS and the centres at T
+  long long wall_collisions = 0;          // K = 1 or 2, so far
+  long long ball_collisions = 0;          // K = 3, so far
+  double starting_energy = 0;             // kinetic energy at T = 0, for the drift
   CollisionObserver* observer = nullptr;  // told of each collision, if any
-  int tone = 0;                     // the base colour's tone; B changes it
-  bool stopped = false;             // S stops, R starts again
-  bool ended = false;               // E
+
+  // The keys.
+  int tone = 0;          // the base colour's tone; B changes it
+  bool stopped = false;  // S stops, R starts again
+  bool ended = false;    // E
 };
 // [/anchor: control]
 

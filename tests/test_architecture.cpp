@@ -70,13 +70,13 @@ std::vector<std::string> include_problems(const std::string& file,
       // A core stage: only the model and earlier stages.
       const std::optional<int> their_stage = stage_number(target);
       if (to_beyond || to_program) {
-        problems.push_back(fmt::format(
-            "{}:{}: a core stage includes \"{}\": the stages never use {}", file, number,
-            target, to_beyond ? "beyond/" : "program/"));
+        problems.push_back(
+            fmt::format("{}:{}: a core stage includes \"{}\": the stages never use {}",
+                        file, number, target, to_beyond ? "beyond/" : "program/"));
       } else if (!their_stage) {
-        problems.push_back(fmt::format(
-            "{}:{}: includes \"{}\", which is not one of the seven stages", file, number,
-            target));
+        problems.push_back(
+            fmt::format("{}:{}: includes \"{}\", which is not one of the seven stages",
+                        file, number, target));
       } else if (own_stage && *their_stage > *own_stage) {
         problems.push_back(fmt::format(
             "{}:{}: stage {} includes stage {} (\"{}\"): a stage uses only earlier ones",
@@ -111,22 +111,31 @@ TEST_SUITE("architecture") {
     std::set<std::string> found;
     for (const auto& entry : fs::directory_iterator(source_path("stages")))
       found.insert(entry.path().filename().string() + (entry.is_directory() ? "/" : ""));
-    const std::set<std::string> expected = {
-        "stage1_data.hpp",           "stage1_data.cpp",
-        "stage2_input.hpp",          "stage2_input.cpp",
-        "stage3_screen.hpp",         "stage3_screen.cpp",
-        "stage4_first_collision.hpp", "stage4_first_collision.cpp",
-        "stage5_new_coordinates.hpp", "stage5_new_coordinates.cpp",
-        "stage6_output.hpp",         "stage6_output.cpp",
-        "stage7_control.hpp",        "stage7_control.cpp",
-        "beyond/",                   "program/"};
+    const std::set<std::string> expected = {"stage1_data.hpp",
+                                            "stage1_data.cpp",
+                                            "stage2_input.hpp",
+                                            "stage2_input.cpp",
+                                            "stage3_screen.hpp",
+                                            "stage3_screen.cpp",
+                                            "stage4_first_collision.hpp",
+                                            "stage4_first_collision.cpp",
+                                            "stage5_new_coordinates.hpp",
+                                            "stage5_new_coordinates.cpp",
+                                            "stage6_output.hpp",
+                                            "stage6_output.cpp",
+                                            "stage7_control.hpp",
+                                            "stage7_control.cpp",
+                                            "beyond/",
+                                            "program/"};
     std::vector<std::string> extra, missing;
     std::set_difference(found.begin(), found.end(), expected.begin(), expected.end(),
                         std::back_inserter(extra));
     std::set_difference(expected.begin(), expected.end(), found.begin(), found.end(),
                         std::back_inserter(missing));
-    CHECK_MESSAGE(extra.empty(), "in stages/ but not one of the seven stages or the two "
-                                 "folders:" << joined(extra));
+    CHECK_MESSAGE(extra.empty(),
+                  "in stages/ but not one of the seven stages or the two "
+                  "folders:"
+                      << joined(extra));
     CHECK_MESSAGE(missing.empty(), "missing from stages/:" << joined(missing));
   }
 
@@ -134,10 +143,12 @@ TEST_SUITE("architecture") {
     std::vector<std::string> problems;
     const std::vector<std::string> files = source_files();
     for (const std::string& file : files) {
-      for (const std::string& problem : include_problems(file, read_file(source_path(file))))
+      for (const std::string& problem :
+           include_problems(file, read_file(source_path(file))))
         problems.push_back(problem);
     }
-    CHECK_MESSAGE(problems.empty(), "includes against the house's rule:" << joined(problems));
+    CHECK_MESSAGE(problems.empty(),
+                  "includes against the house's rule:" << joined(problems));
     MESSAGE(fmt::format("{} files under stages/ checked", files.size()));
     CHECK(files.size() > 14);  // the seven pairs, and more
   }

@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "program/console.hpp"
 #include "beyond/kinetic_screen.hpp"
 #include "beyond/strategy.hpp"
+#include "program/console.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"

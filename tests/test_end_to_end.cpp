@@ -15,8 +15,8 @@
 #include <random>
 #include <vector>
 
-#include "program/console.hpp"
 #include "beyond/strategy.hpp"
+#include "program/console.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 

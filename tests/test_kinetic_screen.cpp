@@ -48,11 +48,12 @@ TEST_SUITE("kinetic-theory") {
     gas::KineticFigures big_kinetic;
     big_kinetic.compressibility = {2.0625, 0.0125};
     big_kinetic.theory.compressibility = 2.0637755;
-    const std::vector<std::string> labels = {"mean speed",      "rms speed",
-                                             "pressure",        "Z = P Ac/(N kT)",
-                                             "collision rate",  "mean free path"};
+    const std::vector<std::string> labels = {"mean speed",     "rms speed",
+                                             "pressure",       "Z = P Ac/(N kT)",
+                                             "collision rate", "mean free path"};
     const int now_column = 18, average_column = 28, theory_column = 50;
-    for (const auto& [f, k] : {std::pair{&small, &small_kinetic}, std::pair{&big, &big_kinetic}}) {
+    for (const auto& [f, k] :
+         {std::pair{&small, &small_kinetic}, std::pair{&big, &big_kinetic}}) {
       TextScreen screen = gas::prepare_character_screen(80, 22);
       screen.at({40, 2}) = 'x';  // something left from before: wiped
       gas::draw_kinetic_figures(screen, *f, *k);
@@ -80,7 +81,8 @@ TEST_SUITE("kinetic-theory") {
     CHECK(screen.lines[7].substr(theory_column, 7) == "2.0638 ");
   }
 
-  TEST_CASE("draw_kinetic_figures on a small screen: one figure a row and cut at the border") {
+  TEST_CASE(
+      "draw_kinetic_figures on a small screen: one figure a row and cut at the border") {
     TextScreen screen =
         gas::prepare_character_screen(20, 8);  // 6 rows inside, 18 columns
     gas::draw_kinetic_figures(screen, some_figures(), gas::KineticFigures{});
@@ -93,7 +95,9 @@ TEST_SUITE("kinetic-theory") {
     CHECK(screen.lines[7] == "+------------------+");
   }
 
-  TEST_CASE("draw_histogram: bars of the measured fractions under the Maxwell-Boltzmann curve") {
+  TEST_CASE(
+      "draw_histogram: bars of the measured fractions under the Maxwell-Boltzmann "
+      "curve") {
     // Measured fractions exactly the Maxwell-Boltzmann ones: every column's
     // '*' sits on top of its bar (the same height), and the axis reads 0 to
     // the last speed.
@@ -114,11 +118,16 @@ TEST_SUITE("kinetic-theory") {
       CAPTURE(column);
       int top = 0;  // the highest row with anything in this column
       for (int row = 2; row < 12 && top == 0; ++row)
-        if (screen.lines[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] != ' ') top = row;
+        if (screen.lines[static_cast<std::size_t>(row)]
+                        [static_cast<std::size_t>(column)] != ' ')
+          top = row;
       if (top == 0) continue;  // too small to draw
-      CHECK(screen.lines[static_cast<std::size_t>(top)][static_cast<std::size_t>(column)] == '*');
+      CHECK(
+          screen.lines[static_cast<std::size_t>(top)][static_cast<std::size_t>(column)] ==
+          '*');
       for (int row = top + 1; row < 12; ++row)
-        CHECK(screen.lines[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] == '#');
+        CHECK(screen.lines[static_cast<std::size_t>(row)]
+                          [static_cast<std::size_t>(column)] == '#');
     }
     // A spike beyond the scale is cut with '^'.
     f.speed_fractions[4] = 0.9;
@@ -127,7 +136,8 @@ TEST_SUITE("kinetic-theory") {
   }
 
   TEST_CASE(
-      "csv_header and csv_row: the article's nine columns then kinetic theory's and numbers that read back bit for bit") {
+      "csv_header and csv_row: the article's nine columns then kinetic theory's and "
+      "numbers that read back bit for bit") {
     CHECK(gas::csv_header().rfind(
               "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"
               "kT,",

@@ -55,7 +55,8 @@ Gas lattice_gas(int side, double eta, unsigned seed) {
   for (int i = 0; i < side; ++i) {
     for (int j = 0; j < side; ++j) {
       const double a = angle(random);
-      g.balls.push_back({(i + 0.5) * cell, (j + 0.5) * cell, std::cos(a), std::sin(a), 0});
+      g.balls.push_back(
+          {(i + 0.5) * cell, (j + 0.5) * cell, std::cos(a), std::sin(a), 0});
     }
   }
   return g;
@@ -89,7 +90,7 @@ struct Measured {
 Measured measure_run(int side, double eta, double warm_up, double length, double every,
                      unsigned seed) {
   ObservedRun run(lattice_gas(side, eta, seed));
-    Control& control = run.control;
+  Control& control = run.control;
   run_until(control, warm_up);
   GasStatistics statistics(control.gas, run.tallies(), 10);
   for (double t = warm_up + every; t <= warm_up + length + every / 2; t += every) {
@@ -158,7 +159,9 @@ void check_equation_of_state(double eta, double length) {
 }  // namespace
 
 TEST_SUITE("kinetic-theory") {
-  TEST_CASE("the formulas: 2D Maxwell-Boltzmann and Henderson and Enskog agree with each other") {
+  TEST_CASE(
+      "the formulas: 2D Maxwell-Boltzmann and Henderson and Enskog agree with each "
+      "other") {
     // The mean of the Rayleigh density by the midpoint rule (steps of 1e-4
     // up to 12 sqrt(kT): truncation and step errors below 1e-8).
     for (const double kT : {0.5, 1.0, 3.0}) {
@@ -196,8 +199,7 @@ TEST_SUITE("kinetic-theory") {
           doctest::Approx(t.compressibility));
     CHECK(t.mean_free_path ==
           doctest::Approx(1 / (2 * std::sqrt(2.0) * s * n * t.contact_value)));
-    CHECK(t.pressure ==
-          doctest::Approx(t.compressibility * 3 * t.kT / (96.0 * 56.0)));
+    CHECK(t.pressure == doctest::Approx(t.compressibility * 3 * t.kT / (96.0 * 56.0)));
   }
 
   TEST_CASE("one ball: the push on the walls gives P times the centres' area = N kT") {
@@ -245,7 +247,8 @@ TEST_SUITE("kinetic-theory") {
     run_until(control, 30);
     for (int k = 1; k <= 60; ++k) {
       run_until(control, 30 + 6 * k);
-      for (const gas::Ball& b : control.gas.balls) speeds.push_back(std::hypot(b.vx, b.vy));
+      for (const gas::Ball& b : control.gas.balls)
+        speeds.push_back(std::hypot(b.vx, b.vy));
     }
     // Kolmogorov-Smirnov at the 0.1 % level: D * sqrt(n) < 1.949.
     const double n = static_cast<double>(speeds.size());
@@ -262,10 +265,12 @@ TEST_SUITE("kinetic-theory") {
     double mean = 0;
     for (const double v : speeds) mean += v / n;
     CAPTURE(mean);
-    CHECK(std::abs(mean - std::sqrt(pi * kT / 2)) <= 3 * std::sqrt((2 - pi / 2) * kT / n));
+    CHECK(std::abs(mean - std::sqrt(pi * kT / 2)) <=
+          3 * std::sqrt((2 - pi / 2) * kT / n));
   }
 
-  TEST_CASE("the time-averaged mean speed of GasStatistics converges to sqrt(pi kT / 2)") {
+  TEST_CASE(
+      "the time-averaged mean speed of GasStatistics converges to sqrt(pi kT / 2)") {
     // The screen's own average, recorded every time unit for 600 time units
     // after 30 to relax; its block error (at least 16 blocks of 18 time units
     // or more, ~15 collisions of each ball: independent enough) gives the
@@ -292,9 +297,15 @@ TEST_SUITE("kinetic-theory") {
 
   // Run lengths: the Z errors they give (from the block averages) are about
   // 0.3 % of Z, against gaps from the walls of 1 to 3 % at N = 100.
-  TEST_CASE("the equation of state at area fraction 0.1") { check_equation_of_state(0.1, 3000); }
-  TEST_CASE("the equation of state at area fraction 0.3") { check_equation_of_state(0.3, 1200); }
-  TEST_CASE("the equation of state at area fraction 0.5") { check_equation_of_state(0.5, 1000); }
+  TEST_CASE("the equation of state at area fraction 0.1") {
+    check_equation_of_state(0.1, 3000);
+  }
+  TEST_CASE("the equation of state at area fraction 0.3") {
+    check_equation_of_state(0.3, 1200);
+  }
+  TEST_CASE("the equation of state at area fraction 0.5") {
+    check_equation_of_state(0.5, 1000);
+  }
 
   TEST_CASE("the walls' excess pressure shrinks as the walls' share of the gas") {
     // At area fraction 0.5 the wall correction is large enough to measure:
@@ -304,7 +315,8 @@ TEST_SUITE("kinetic-theory") {
     const Measured small = measure_run(10, 0.5, 30, 1000, 1.0, 11);
     const Measured large = measure_run(20, 0.5, 30, 1000, 1.0, 12);
     const double henderson = gas::henderson_compressibility(0.5);
-    const double gap_small = small.z.value - henderson, gap_large = large.z.value - henderson;
+    const double gap_small = small.z.value - henderson,
+                 gap_large = large.z.value - henderson;
     CAPTURE(gap_small);
     CAPTURE(gap_large);
     CHECK(gap_large > 3 * large.z.error);

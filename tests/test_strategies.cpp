@@ -31,11 +31,11 @@
 #include <string>
 #include <vector>
 
-#include "program/console.hpp"
-#include "stage2_input.hpp"
 #include "beyond/cell_grid.hpp"
 #include "beyond/event_table.hpp"
 #include "beyond/strategy.hpp"
+#include "program/console.hpp"
+#include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"
 
@@ -195,7 +195,8 @@ TEST_SUITE("strategies") {
     const Gas seven = gas::parse_scene(gas::default_scene_text, gas::default_scene_name);
     CHECK(std::string(gas::start_control(seven).finder->name()) == "scan");
     for (const Strategy strategy : all_strategies) {
-      CHECK(std::string(gas::start_control(seven, gas::make_finder(strategy)).finder->name()) ==
+      CHECK(std::string(
+                gas::start_control(seven, gas::make_finder(strategy)).finder->name()) ==
             gas::strategy_name(strategy));
     }
   }

@@ -2,9 +2,9 @@
 //
 // What this file does: gives every event stage 4 can find a key — its time,
 // then its place in the article's scan. (Each event's time comes from the
-// scan's own expressions: wall_time and pair_time in stage 4.) A program that keeps its predictions from one
-// collision to the next (beyond/event_table.*, beyond/cell_grid.*) and takes
-// the event with the smallest key finds exactly the collision the scan finds:
+// scan's own expressions: wall_time and pair_time in stage 4.) A program that keeps its
+// predictions from one collision to the next (beyond/event_table.*, beyond/cell_grid.*)
+// and takes the event with the smallest key finds exactly the collision the scan finds:
 // the same TC to the last bit, and the same K, N1, N2 when events tie.
 // Beyond the article: the article scans afresh for every collision and needs
 // no such key; it is what lets a faster program promise the same answer.

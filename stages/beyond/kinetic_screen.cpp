@@ -10,9 +10,10 @@ namespace gas {
 
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) {
   KineticFigures k;
-  k.rms_speed = gas.balls.empty() ? 0.0
-                                  : std::sqrt(2 * kinetic_energy(gas) /
-                                              static_cast<double>(gas.balls.size()));
+  k.rms_speed =
+      gas.balls.empty()
+          ? 0.0
+          : std::sqrt(2 * kinetic_energy(gas) / static_cast<double>(gas.balls.size()));
   k.theory = kinetic_theory(gas);
   k.average_mean_speed = statistics.mean_speed();
   k.pressure = statistics.pressure();
@@ -82,7 +83,8 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
   for (int column = 2; column < 2 + shown_bins * span; ++column) {
     const auto b = static_cast<std::size_t>((column - 2) / span);
     const int bar = height(measured[b]);
-    for (int h = 1; h <= std::min(bar, bar_rows); ++h) screen.at({column, axis - h}) = '#';
+    for (int h = 1; h <= std::min(bar, bar_rows); ++h)
+      screen.at({column, axis - h}) = '#';
     if (bar > bar_rows) screen.at({column, axis - bar_rows}) = '^';  // cut off
     const int curve = height(expected[b]);
     if (curve >= 1) screen.at({column, axis - std::min(curve, bar_rows)}) = '*';
@@ -135,7 +137,6 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
   draw_histogram(screen, k, count + 2, screen.rows - 2);
 }
 // [/anchor: draw-kinetic-figures]
-
 
 std::string csv_header() {
   return "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"

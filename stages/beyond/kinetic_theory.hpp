@@ -33,15 +33,15 @@ inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 // What kinetic theory predicts for a gas, from N, a, A1, A2 and E only.
 // [anchor: kinetic-theory]
 struct KineticTheory {
-  double kT = 0;              // E / N: two degrees of freedom per ball, unit mass
-  double mean_speed = 0;      // 2D Maxwell-Boltzmann: <v> = sqrt(pi kT / 2)
-  double rms_speed = 0;       // sqrt(<v^2>) = sqrt(2 kT), fixed by E alone
-  double area_fraction = 0;   // eta = N pi a^2 / (A1 A2)
-  double contact_value = 0;   // g(2a), Henderson: (1 - 7 eta / 16) / (1 - eta)^2
-  double compressibility = 0; // Z, Henderson: (1 + eta^2 / 8) / (1 - eta)^2
-  double pressure = 0;        // P = Z N kT / (the centres' area), see measured_area
-  double collision_rate = 0;  // per ball, Enskog: 2 (2a) n g(2a) sqrt(pi kT)
-  double mean_free_path = 0;  // <v> / collision rate
+  double kT = 0;               // E / N: two degrees of freedom per ball, unit mass
+  double mean_speed = 0;       // 2D Maxwell-Boltzmann: <v> = sqrt(pi kT / 2)
+  double rms_speed = 0;        // sqrt(<v^2>) = sqrt(2 kT), fixed by E alone
+  double area_fraction = 0;    // eta = N pi a^2 / (A1 A2)
+  double contact_value = 0;    // g(2a), Henderson: (1 - 7 eta / 16) / (1 - eta)^2
+  double compressibility = 0;  // Z, Henderson: (1 + eta^2 / 8) / (1 - eta)^2
+  double pressure = 0;         // P = Z N kT / (the centres' area), see measured_area
+  double collision_rate = 0;   // per ball, Enskog: 2 (2a) n g(2a) sqrt(pi kT)
+  double mean_free_path = 0;   // <v> / collision rate
 };
 // [/anchor: kinetic-theory]
 
@@ -113,9 +113,9 @@ class GasStatistics {
   double duration() const { return total_.duration; }
   // Time averages since the start.
   Average mean_speed() const;
-  Average pressure() const;        // wall push per time per unit length of wall
-  Average compressibility() const; // P * measured_area / (N kT)
-  Average collision_rate() const;  // per ball: 2 * (collisions of two balls) / (N t)
+  Average pressure() const;         // wall push per time per unit length of wall
+  Average compressibility() const;  // P * measured_area / (N kT)
+  Average collision_rate() const;   // per ball: 2 * (collisions of two balls) / (N t)
 
   // The histogram: for each bin the fraction of ball-time spent at speeds in
   // it; with the fraction beyond the last bin, the fractions sum to 1.
@@ -142,14 +142,14 @@ class GasStatistics {
   double bin_width_ = 0;
   Tallies last_;
   double last_mean_speed_ = 0;
-  std::vector<int> last_bin_;      // each ball's bin at the last record
-  std::vector<double> speed_time_; // ball-time spent in each bin
-  double beyond_time_ = 0;         // ball-time faster than the last bin
+  std::vector<int> last_bin_;       // each ball's bin at the last record
+  std::vector<double> speed_time_;  // ball-time spent in each bin
+  double beyond_time_ = 0;          // ball-time faster than the last bin
   Sums total_;
-  Sums block_;                     // the block being filled
-  long long block_records_ = 0;    // records in it
+  Sums block_;                   // the block being filled
+  long long block_records_ = 0;  // records in it
   long long records_per_block_ = 1;
-  std::vector<Sums> blocks_;       // finished blocks, all of records_per_block_
+  std::vector<Sums> blocks_;  // finished blocks, all of records_per_block_
 };
 
 }  // namespace gas

@@ -41,10 +41,10 @@
 #include <vector>
 
 #include "benchmark_build_info.hpp"
+#include "beyond/strategy.hpp"
 #include "program/console.hpp"
 #include "reference_gas.hpp"
 #include "stage2_input.hpp"
-#include "beyond/strategy.hpp"
 #include "stage5_new_coordinates.hpp"
 #include "stage7_control.hpp"
 #include "time_stepped.hpp"
@@ -171,7 +171,9 @@ struct EventLoop {
   std::unique_ptr<gas::FirstCollisionFinder> finder;
 
   EventLoop(const Gas& start, Strategy strategy)
-      : gas(start), limits(gas::centre_limits(start)), finder(gas::make_finder(strategy)) {
+      : gas(start),
+        limits(gas::centre_limits(start)),
+        finder(gas::make_finder(strategy)) {
     finder->rebuild(gas, limits);
   }
   // The next collision, carried out; K = 0 if there is none.

@@ -9,8 +9,8 @@
 // checks can ask for equality.
 #include <doctest/doctest.h>
 
-#include "program/console.hpp"
 #include "exercise_test.hpp"
+#include "program/console.hpp"
 #include "stage1_data.hpp"
 #include "stage2_input.hpp"
 

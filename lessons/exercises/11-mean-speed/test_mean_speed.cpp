@@ -10,8 +10,8 @@
 
 #include <cmath>
 
-#include "program/console.hpp"
 #include "exercise_test.hpp"
+#include "program/console.hpp"
 #include "stage1_data.hpp"
 #include "stage2_input.hpp"
 
