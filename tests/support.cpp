@@ -24,6 +24,19 @@ gas::Gas table_with(std::vector<gas::Ball> balls, double time) {
   return gas;
 }
 
+gas::Figures some_figures() {
+  gas::Figures f;
+  f.time = 12.5;
+  f.display_step = 0.5;
+  f.wall_collisions = 4;
+  f.ball_collisions = 3;
+  f.mean_speed = 1.0 / 3;
+  f.energy = 2.0 / 7;
+  f.energy_drift = -1.25e-16;
+  f.momentum = {0.1, -2.0 / 3};
+  return f;
+}
+
 std::string source_path(const std::string& relative) {
   return std::string(GAS_SOURCE_DIR) + "/" + relative;
 }

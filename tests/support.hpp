@@ -3,15 +3,20 @@
 #pragma once
 
 #include <string>
-
 #include <vector>
+
 #include "stage1_data.hpp"
+#include "stage6_output.hpp"
 
 namespace gas::testing {
 
 // A hand-made gas for the stage tests: a 40 x 30 table with balls of
 // radius 1, so that centres stay in [1, 39] x [1, 29].
 gas::Gas table_with(std::vector<gas::Ball> balls, double time = 0);
+
+// Figures of stage 6 with a value in every field, numbers that need many
+// digits among them (T = 12.5, T0 = 0.5, 4 wall and 3 ball collisions, ...).
+gas::Figures some_figures();
 
 // A path inside the source tree, e.g. source_path("data/default.scene").
 std::string source_path(const std::string& relative);

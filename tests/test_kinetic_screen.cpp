@@ -15,25 +15,9 @@
 #include <vector>
 
 #include "beyond/kinetic_screen.hpp"
-
-namespace {
+#include "support.hpp"
 
 using gas::TextScreen;
-
-gas::Figures some_figures() {
-  gas::Figures f;
-  f.time = 12.5;
-  f.display_step = 0.5;
-  f.wall_collisions = 4;
-  f.ball_collisions = 3;
-  f.mean_speed = 1.0 / 3;
-  f.energy = 2.0 / 7;
-  f.energy_drift = -1.25e-16;
-  f.momentum = {0.1, -2.0 / 3};
-  return f;
-}
-
-}  // namespace
 
 TEST_SUITE("kinetic-theory") {
   TEST_CASE("draw_kinetic_figures puts each figure at a fixed place whatever its value") {
@@ -41,7 +25,7 @@ TEST_SUITE("kinetic-theory") {
     // the "now", "average" and "theory" columns start at the same columns, on
     // both screens (lesson 11 has the layout).
     gas::Figures small;
-    gas::Figures big = some_figures();
+    gas::Figures big = gas::testing::some_figures();
     big.time = 123456.75;
     big.wall_collisions = 1234567;
     gas::KineticFigures small_kinetic;
@@ -85,7 +69,8 @@ TEST_SUITE("kinetic-theory") {
       "draw_kinetic_figures on a small screen: one figure a row and cut at the border") {
     TextScreen screen =
         gas::prepare_character_screen(20, 8);  // 6 rows inside, 18 columns
-    gas::draw_kinetic_figures(screen, some_figures(), gas::KineticFigures{});
+    gas::draw_kinetic_figures(screen, gas::testing::some_figures(),
+                              gas::KineticFigures{});
     CHECK(screen.lines[1].substr(0, 14) == "| T 12.500000 ");
     CHECK(screen.lines[4].substr(0, 12) == "| mean speed");
     for (const std::string& line : screen.lines) {
@@ -142,7 +127,7 @@ TEST_SUITE("kinetic-theory") {
               "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"
               "kT,",
               0) == 0);
-    gas::Figures f = some_figures();
+    gas::Figures f = gas::testing::some_figures();
     f.time = 37.0 / 3;  // numbers that need all 17 digits
     f.display_step = 0.1;
     gas::KineticFigures k;

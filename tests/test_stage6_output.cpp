@@ -145,19 +145,6 @@ struct Terminal {
   }
 };
 
-gas::Figures some_figures() {
-  gas::Figures f;
-  f.time = 12.5;
-  f.display_step = 0.5;
-  f.wall_collisions = 4;
-  f.ball_collisions = 3;
-  f.mean_speed = 1.0 / 3;
-  f.energy = 2.0 / 7;
-  f.energy_drift = -1.25e-16;
-  f.momentum = {0.1, -2.0 / 3};
-  return f;
-}
-
 }  // namespace
 
 TEST_SUITE("stage6") {
@@ -331,7 +318,7 @@ TEST_SUITE("stage6") {
   TEST_CASE(
       "status_line: T with 6 decimals then T0 and the collisions and the screen and "
       "stopped") {
-    const gas::Figures f = some_figures();
+    const gas::Figures f = gas::testing::some_figures();
     CHECK(gas::status_line(f, gas::ScreenMode::trails, false) ==
           "T=12.500000 T0=0.5 collisions=7 (walls 4, balls 3) screen=trails");
     CHECK(gas::status_line(f, gas::ScreenMode::balls, true) ==
