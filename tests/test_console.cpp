@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "program/console.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"

@@ -15,8 +15,8 @@
 #include <random>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "program/console.hpp"
-#include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
 namespace {

@@ -4,8 +4,8 @@
 // article's formulas, with every ball moved at every event and the quadratic
 // solved in its textbook form — runs the default scene in long double
 // (64-bit mantissa) and in __float128 (113-bit, soft float; its square root
-// by Newton's method, so no extra library). The program's stages run in double (53 bits). We compare
-// the sequences of collisions (K, N1, N2) and their times.
+// by Newton's method, so no extra library). The program's stages run in double (53 bits).
+// We compare the sequences of collisions (K, N1, N2) and their times.
 //
 // Why the agreement is finite: a collision of two discs turns a small error
 // in the direction of a velocity into an error larger by about (free path /
@@ -21,9 +21,9 @@
 #include <cmath>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "program/console.hpp"
 #include "reference_gas.hpp"
-#include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
 namespace {

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "stage2_input.hpp"
+#include "beyond/random_placement.hpp"
 #include "stage6_output.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"
@@ -320,9 +320,9 @@ TEST_SUITE("stage6") {
     big.wall_collisions = 1234567;
     big.compressibility = {2.0625, 0.0125};
     big.theory.compressibility = 2.0637755;
-    const std::vector<std::string> labels = {"mean speed",      "rms speed",
-                                             "pressure",        "Z = P Ac/(N kT)",
-                                             "collision rate",  "mean free path"};
+    const std::vector<std::string> labels = {"mean speed",     "rms speed",
+                                             "pressure",       "Z = P Ac/(N kT)",
+                                             "collision rate", "mean free path"};
     const int now_column = 18, average_column = 28, theory_column = 50;
     for (const gas::Figures* f : {&small, &big}) {
       TextScreen screen = gas::prepare_character_screen(80, 22);
@@ -365,7 +365,9 @@ TEST_SUITE("stage6") {
     CHECK(screen.lines[7] == "+------------------+");
   }
 
-  TEST_CASE("draw_histogram: bars of the measured fractions under the Maxwell-Boltzmann curve") {
+  TEST_CASE(
+      "draw_histogram: bars of the measured fractions under the Maxwell-Boltzmann "
+      "curve") {
     // Measured fractions exactly the Maxwell-Boltzmann ones: every column's
     // '*' sits on top of its bar (the same height), and the axis reads 0 to
     // the last speed.
@@ -386,11 +388,16 @@ TEST_SUITE("stage6") {
       CAPTURE(column);
       int top = 0;  // the highest row with anything in this column
       for (int row = 2; row < 12 && top == 0; ++row)
-        if (screen.lines[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] != ' ') top = row;
+        if (screen.lines[static_cast<std::size_t>(row)]
+                        [static_cast<std::size_t>(column)] != ' ')
+          top = row;
       if (top == 0) continue;  // too small to draw
-      CHECK(screen.lines[static_cast<std::size_t>(top)][static_cast<std::size_t>(column)] == '*');
+      CHECK(
+          screen.lines[static_cast<std::size_t>(top)][static_cast<std::size_t>(column)] ==
+          '*');
       for (int row = top + 1; row < 12; ++row)
-        CHECK(screen.lines[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] == '#');
+        CHECK(screen.lines[static_cast<std::size_t>(row)]
+                          [static_cast<std::size_t>(column)] == '#');
     }
     // A spike beyond the scale is cut with '^'.
     f.speed_fractions[4] = 0.9;
@@ -411,7 +418,8 @@ TEST_SUITE("stage6") {
   }
 
   TEST_CASE(
-      "csv_header and csv_row: the article's nine columns then kinetic theory's and numbers that read back bit for bit") {
+      "csv_header and csv_row: the article's nine columns then kinetic theory's and "
+      "numbers that read back bit for bit") {
     CHECK(gas::csv_header().rfind(
               "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"
               "kT,",

@@ -11,9 +11,10 @@
 #include <iostream>
 #include <memory>
 
+#include "beyond/random_placement.hpp"
+#include "program/terminal.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
-#include "program/terminal.hpp"
 
 namespace gas {
 namespace {
@@ -321,8 +322,8 @@ class ConsoleRun {
 
   // What stage 7 has counted, for the statistics (lesson 11).
   Tallies tallies() const {
-    return {control_.gas.time, control_.horizontal_wall_push,
-            control_.vertical_wall_push, control_.ball_collisions};
+    return {control_.gas.time, control_.horizontal_wall_push, control_.vertical_wall_push,
+            control_.ball_collisions};
   }
 
   Figures figures() const {

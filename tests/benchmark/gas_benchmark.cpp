@@ -41,10 +41,10 @@
 #include <vector>
 
 #include "benchmark_build_info.hpp"
+#include "beyond/random_placement.hpp"
+#include "beyond/strategy.hpp"
 #include "program/console.hpp"
 #include "reference_gas.hpp"
-#include "stage2_input.hpp"
-#include "beyond/strategy.hpp"
 #include "stage5_new_coordinates.hpp"
 #include "stage7_control.hpp"
 #include "time_stepped.hpp"
