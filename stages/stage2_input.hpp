@@ -3,14 +3,27 @@
 // What this stage does: reads a scene file — the radius, the table, the
 // display step and the initial centre and velocity of every ball — checks
 // that it describes a gas the later stages can run, and builds the Gas.
+// The reading is split by job: a line into words, a word into a number, a
+// keyword line into what the file said; then the checks of the whole scene,
+// one function each (the sizes, the count N, every centre inside the table,
+// no two balls overlapping).
 // Article: "Gas on the display", stage 2, "input" (initial coordinates and
 // velocities of the centres, and the step T0).
 // Lesson: lessons/2-input.md; the file format: data/README.md.
+//
+// Beyond the article, a scene may ask for balls at random places with a line
+// 'random COUNT SEED SPEED'. Stage 2 reads and checks that line and keeps it
+// as a request (SceneDescription::random); placing the balls is the job of
+// beyond/random_placement.*, whose parse_scene and read_scene_file give the
+// whole gas of any scene. The program reads its scenes through those.
 //
 // Assumptions: a scene is small enough to read into memory. Every problem is
 // reported as "FILE:LINE: what is wrong"; the reader never guesses.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -46,24 +59,43 @@ inline constexpr double contact_tolerance = 1e-9;
 inline constexpr double smallest_magnitude = 1e-75;
 inline constexpr double largest_magnitude = 1e75;
 
-// The 'random COUNT SEED SPEED' line (data/README.md): at most this many
-// balls, placed at random, each given at most this many tries to find a free
-// place (random placement of discs fills about 0.55 of a table at most; the
-// tries keep a scene that asks for more from running for ever).
+// The most balls a 'random COUNT SEED SPEED' line may ask for (data/README.md).
 inline constexpr double most_random_balls = 1e5;
-inline constexpr int most_tries_per_random_ball = 10000;
-// The densest packing of equal discs covers pi / (2 sqrt 3) of the plane.
-inline constexpr double densest_packing = 0.9068996821171089;
+
+// What a 'random COUNT SEED SPEED' line asks for, its numbers checked: COUNT
+// balls at random places, from the generator seeded with SEED, with speeds
+// around SPEED. Beyond the article; beyond/random_placement.* carries it out.
+struct RandomBalls {
+  std::size_t count = 0;   // COUNT, 1 to most_random_balls
+  std::uint64_t seed = 0;  // SEED, 0 to 2^53
+  double speed = 0;        // SPEED > 0
+  int line = 0;            // the line of the file it is on, for messages
+};
+
+// A scene as its file describes it, every check passed: the gas of its
+// 'ball' lines, and the request of its 'random' line if it has one (those
+// balls are not placed yet).
+struct SceneDescription {
+  std::string file_name;              // for messages about the scene
+  Gas gas;                            // N, a, T0, A1, A2 and R of the 'ball' lines
+  std::optional<RandomBalls> random;  // the 'random' line, if any
+};
 
 // Parses scene text; `file_name` is used only in messages.
-Gas parse_scene(std::string_view text, const std::string& file_name);
+SceneDescription parse_scene_description(std::string_view text,
+                                         const std::string& file_name);
 
 // Reads and parses the scene file at `path`.
-Gas read_scene_file(const std::string& path);
+SceneDescription read_scene_description(const std::string& path);
 
-// The gas as a scene file that parse_scene reads back: the centres at the
-// present time T, every number with 17 significant digits (enough to give
-// back the same double).
+// The gas of a scene that lists all its balls. A scene with a 'random' line
+// is refused (at that line): its gas comes from place_random_balls,
+// parse_scene or read_scene_file (beyond/random_placement.hpp).
+Gas build_gas(const SceneDescription& scene);
+
+// The gas as a scene file that stage 2 reads back: the centres at the present
+// time T, every number with 17 significant digits (enough to give back the
+// same double).
 std::string scene_text(const Gas& gas);
 
 }  // namespace gas

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "beyond/random_placement.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "beyond/kinetic_screen.hpp"
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
 #include "stage2_input.hpp"

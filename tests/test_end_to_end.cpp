@@ -15,9 +15,9 @@
 #include <random>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
-#include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
 namespace {

@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"

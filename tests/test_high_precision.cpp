@@ -21,10 +21,10 @@
 #include <cmath>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
 #include "reference_gas.hpp"
-#include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
 namespace {

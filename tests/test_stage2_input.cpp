@@ -2,16 +2,17 @@
 //
 // - Every teaching scene (data/*.scene) and every edge scene (data/edge/)
 //   is accepted, with as many balls as the file has 'ball' lines (and as
-//   its 'random' line places).
+//   its 'random' line places: the whole reader, beyond/random_placement).
 // - Every malformed scene (data/bad/) is refused by the program: exit status
 //   2, nothing on standard output, and on standard error one line
 //   "FILE:LINE: what is wrong" equal to the golden file beside the scene
 //   (data/bad/NAME.err), whose LINE is the one the scene's comment names.
-// - parse_scene on text in memory: comments, blank lines, tabs, N optional,
-//   a missing keyword named, CRLF and a byte-order mark, the contact
-//   tolerance for touching balls.
+// - Stage 2's own reader on text in memory (parse_scene_description, then
+//   build_gas): comments, blank lines, tabs, N optional, a missing keyword
+//   named, CRLF and a byte-order mark, the contact tolerance for touching
+//   balls; a 'random' line kept as a request that build_gas refuses.
 // - A missing file and a directory given as the scene.
-// - scene_text and parse_scene round-trip every number bit for bit.
+// - scene_text and stage 2 round-trip every number bit for bit.
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
@@ -25,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
@@ -72,10 +74,15 @@ std::size_t count_ball_lines(const std::string& text) {
   return count;
 }
 
-// What parse_scene says about `text`: its message, or "" if it accepts it.
+// The gas of scene text, read by stage 2 alone.
+gas::Gas read_text(const std::string& text, const std::string& name = "t.scene") {
+  return gas::build_gas(gas::parse_scene_description(text, name));
+}
+
+// What stage 2 says about `text`: its message, or "" if it accepts it.
 std::string refusal(const std::string& text, const std::string& name = "t.scene") {
   try {
-    gas::parse_scene(text, name);
+    read_text(text, name);
   } catch (const gas::SceneError& error) {
     return error.what();
   }
@@ -163,7 +170,9 @@ TEST_SUITE("stage2") {
     }
   }
 
-  TEST_CASE("parse_scene: comments anywhere and blank lines and tabs and N optional") {
+  TEST_CASE(
+      "parse_scene_description: comments anywhere and blank lines and tabs and N "
+      "optional") {
     const std::string text =
         "# a comment line\n"
         "\n"
@@ -175,7 +184,7 @@ TEST_SUITE("stage2") {
         "ball 10 20 1.5 -2   # first\n"
         "# ball 50 50 0 0    (commented out: not a ball)\n"
         "ball\t30\t40\t-0.25\t0\n";
-    const gas::Gas gas = gas::parse_scene(text, "t.scene");
+    const gas::Gas gas = read_text(text);
     CHECK(gas.radius == 4);
     CHECK(gas.display_step == 0.5);
     CHECK(gas.width == 100);
@@ -190,12 +199,12 @@ TEST_SUITE("stage2") {
     CHECK(gas.balls[1].since == 0);
 
     // With N equal to the count, the same gas; N is optional.
-    const gas::Gas with_n = gas::parse_scene("N 2\n" + text, "t.scene");
+    const gas::Gas with_n = read_text("N 2\n" + text);
     CHECK(with_n.balls.size() == 2);
     CHECK(refusal("N 3\n" + text) == "t.scene:1: N = 3 but the file has 2 'ball' lines");
   }
 
-  TEST_CASE("parse_scene: each missing keyword is named at the last line") {
+  TEST_CASE("parse_scene_description: each missing keyword is named at the last line") {
     const std::string ball = "ball 50 50 1 0\n";
     const std::vector<std::pair<std::string, std::string>> lines = {
         {"a", "a 4\n"}, {"T0", "T0 1\n"}, {"A1", "A1 100\n"}, {"A2", "A2 100\n"}};
@@ -212,7 +221,8 @@ TEST_SUITE("stage2") {
   }
 
   TEST_CASE(
-      "parse_scene: CRLF line ends and a UTF-8 byte-order mark read like plain LF") {
+      "parse_scene_description: CRLF line ends and a UTF-8 byte-order mark read like "
+      "plain LF") {
     const std::string lf =
         small_table + "# comment\n\nball 20 30 1 -1   # a ball\nball 60 30 0 2\n";
     std::string crlf = "\xEF\xBB\xBF";
@@ -220,8 +230,8 @@ TEST_SUITE("stage2") {
       if (c == '\n') crlf += '\r';
       crlf += c;
     }
-    const gas::Gas plain = gas::parse_scene(lf, "lf.scene");
-    const gas::Gas windows = gas::parse_scene(crlf, "crlf.scene");
+    const gas::Gas plain = read_text(lf, "lf.scene");
+    const gas::Gas windows = read_text(crlf, "crlf.scene");
     CHECK(gas::scene_text(windows) == gas::scene_text(plain));
 
     // The lines are still counted right: the error names the same line.
@@ -231,15 +241,16 @@ TEST_SUITE("stage2") {
 
     // A byte-order mark is only skipped at the very start; elsewhere it is a
     // stray byte, shown escaped.
-    CHECK(
-        refusal(small_table + "\xEF\xBB\xBF"
-                              "ball 20 30 1 1\n",
-                "f") ==
-        "f:5: unknown keyword '\\xef\\xbb\\xbfball' (expected a, T0, A1, A2, N, ball or random)");
+    CHECK(refusal(small_table + "\xEF\xBB\xBF"
+                                "ball 20 30 1 1\n",
+                  "f") ==
+          "f:5: unknown keyword '\\xef\\xbb\\xbfball' (expected a, T0, A1, A2, N, ball "
+          "or random)");
   }
 
   TEST_CASE(
-      "parse_scene: touching balls are accepted within contact_tolerance and overlaps "
+      "parse_scene_description: touching balls are accepted within contact_tolerance and "
+      "overlaps "
       "refused") {
     // Distances as fractions of the diameter 2a = 8. Half the tolerance is
     // well inside it (a rounding error of a decimal scene is far smaller);
@@ -292,7 +303,7 @@ TEST_SUITE("stage2") {
     CHECK_THROWS_AS(gas::read_scene_file(source_path("data")), gas::SceneError);
   }
 
-  TEST_CASE("scene_text then parse_scene gives back every number bit for bit") {
+  TEST_CASE("scene_text then stage 2 gives back every number bit for bit") {
     // Awkward numbers: thirds and tenths (not exact in binary), the tiniest
     // and largest magnitudes stage 2 accepts, a negative zero, and random ones
     // (fixed seed).
@@ -334,7 +345,7 @@ TEST_SUITE("stage2") {
       }
     };
     SUBCASE("at T = 0") {
-      same(gas::parse_scene(gas::scene_text(g), "round"), g, 0);
+      same(read_text(gas::scene_text(g), "round"), g, 0);
     }
 
     SUBCASE("after a run: the centres at T, written with 17 digits") {
@@ -342,9 +353,58 @@ TEST_SUITE("stage2") {
           gas::start_control_for(gas::read_scene_file(source_path("data/crowd.scene")));
       while (control.gas.time < 123.25) gas::take_step(control, 123.25, nullptr);
       REQUIRE(control.wall_collisions + control.ball_collisions > 0);
-      same(gas::parse_scene(gas::scene_text(control.gas), "round"), control.gas,
+      same(read_text(gas::scene_text(control.gas), "round"), control.gas,
            control.gas.time);
     }
   }
 
+  TEST_CASE(
+      "parse_scene_description keeps a 'random' line as a request that build_gas "
+      "refuses") {
+    const std::string text = small_table + "ball 50 50 1 0\nrandom 3 1989 2.5\n";
+    const gas::SceneDescription scene = gas::parse_scene_description(text, "r.scene");
+    CHECK(scene.file_name == "r.scene");
+    // The gas holds the 'ball' lines only; the request waits to be placed.
+    REQUIRE(scene.gas.balls.size() == 1);
+    CHECK(scene.gas.balls[0].x == 50);
+    CHECK(scene.gas.radius == 4);
+    REQUIRE(scene.random.has_value());
+    CHECK(scene.random->count == 3);
+    CHECK(scene.random->seed == 1989);
+    CHECK(scene.random->speed == 2.5);
+    CHECK(scene.random->line == 6);
+    CHECK_THROWS_WITH_AS(gas::build_gas(scene),
+                         "r.scene:6: 'random' asks for balls at random places, which "
+                         "stage 2 does not place: read the scene with parse_scene or "
+                         "read_scene_file (beyond/random_placement.hpp)",
+                         gas::SceneError);
+    // The whole reader places them, after the 'ball' line's ball.
+    const gas::Gas placed = gas::parse_scene(text, "r.scene");
+    REQUIRE(placed.balls.size() == 4);
+    CHECK(placed.balls[0].x == 50);
+    // Without the line there is no request, and build_gas gives the gas.
+    const gas::SceneDescription plain =
+        gas::parse_scene_description(small_table + "ball 50 50 1 0\n", "p.scene");
+    CHECK_FALSE(plain.random.has_value());
+    CHECK(gas::scene_text(gas::build_gas(plain)) == gas::scene_text(plain.gas));
+  }
+
+  TEST_CASE(
+      "every scene without a 'random' line: stage 2 alone gives the gas the whole "
+      "reader gives") {
+    std::size_t without_random = 0;
+    for (const std::string& name : files_in("", ".scene")) {
+      CAPTURE(name);
+      const std::string path = source_path("data/" + name);
+      const gas::SceneDescription scene = gas::read_scene_description(path);
+      if (scene.random) {
+        CHECK_THROWS_AS(gas::build_gas(scene), gas::SceneError);
+        continue;
+      }
+      ++without_random;
+      CHECK(gas::scene_text(gas::build_gas(scene)) ==
+            gas::scene_text(gas::read_scene_file(path)));
+    }
+    CHECK(without_random >= 5);
+  }
 }  // TEST_SUITE

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "stage2_input.hpp"
+#include "beyond/random_placement.hpp"
 #include "stage6_output.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "beyond/random_placement.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"

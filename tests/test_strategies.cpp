@@ -32,7 +32,9 @@
 #include <vector>
 
 #include "beyond/cell_grid.hpp"
+#include "beyond/cell_layout.hpp"
 #include "beyond/event_table.hpp"
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
 #include "stage2_input.hpp"
@@ -397,6 +399,34 @@ TEST_SUITE("strategies") {
     grid.rebuild(seven, gas::centre_limits(seven));
     CHECK(grid.columns() == 7);
     CHECK(grid.rows() == 5);
+  }
+
+  TEST_CASE(
+      "strategies: the cell layout gives cells at least as long as asked and clamps a "
+      "point's cell to the table") {
+    const gas::CellLayout cells = gas::lay_out_cells(100, 30, 8, 1000);
+    CHECK(cells.columns == 12);  // 100 / 8 = 12.5
+    CHECK(cells.rows == 3);      // 30 / 8 = 3.75
+    CHECK(cells.cell_width == 100.0 / 12);
+    CHECK(cells.cell_height == 10);
+    CHECK(cells.column_of(0) == 0);
+    CHECK(cells.column_of(51) == 6);
+    CHECK(cells.row_of(29.5) == 2);
+    // A rounding off the table is in the cell at its edge.
+    CHECK(cells.column_of(-1e-12) == 0);
+    CHECK(cells.column_of(100) == 11);
+    CHECK(cells.row_of(30 + 1e-12) == 2);
+    // 1000 x 1000 cells would fit, but 100 are asked for at most: both sides
+    // get fewer, in proportion, so each cell is only larger.
+    const gas::CellLayout capped = gas::lay_out_cells(1000, 1000, 1, 100);
+    CHECK(capped.columns == 10);
+    CHECK(capped.rows == 10);
+    CHECK(capped.cell_width == 100);
+    // A table narrower than one cell: one cell, as wide as the table.
+    const gas::CellLayout one = gas::lay_out_cells(5, 50, 8, 100);
+    CHECK(one.columns == 1);
+    CHECK(one.cell_width == 5);
+    CHECK(one.rows == 6);
   }
 }
 

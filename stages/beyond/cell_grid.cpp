@@ -11,18 +11,6 @@ namespace gas {
 
 namespace {
 
-// How many cells along a side of `length`: as many as fit with each at least
-// `smallest` long, and at least one.
-double cells_along(double length, double smallest) {
-  return std::max(1.0, std::floor(length / smallest));
-}
-
-// The cell of a coordinate, among `cells` cells of width `width` from 0.
-int cell_of(double coordinate, double width, int cells) {
-  const double cell = std::floor(coordinate / width);
-  return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(cells - 1)));
-}
-
 constexpr std::uint64_t scan_event = std::uint64_t{1} << 63;
 
 }  // namespace
@@ -182,7 +170,7 @@ bool CellGrid::edge_ahead(int ball, bool along_x) const {
   const Record& r = record(ball);
   const double velocity = along_x ? row(ball).vx : row(ball).vy;
   const int cell = along_x ? r.column : r.line;
-  const int last = (along_x ? columns_ : rows_) - 1;
+  const int last = (along_x ? cells_.columns : cells_.rows) - 1;
   return ((velocity > 0) & (cell == last)) | ((velocity < 0) & (cell == 0));
 }
 
@@ -217,8 +205,9 @@ CellGrid::Prediction CellGrid::next_crossing(int ball) const {
   const bool right = row.vx > 0, up = row.vy > 0;
   const bool open_x = (row.vx != 0) & !edge_ahead(ball, true);
   const bool open_y = (row.vy != 0) & !edge_ahead(ball, false);
-  const double to_x = row.since + ((r.column + right) * cell_width_ - row.x) / row.vx;
-  const double to_y = row.since + ((r.line + up) * cell_height_ - row.y) / row.vy;
+  const double to_x =
+      row.since + ((r.column + right) * cells_.cell_width - row.x) / row.vx;
+  const double to_y = row.since + ((r.line + up) * cells_.cell_height - row.y) / row.vy;
   const double across = open_x ? to_x : never, down = open_y ? to_y : never;
   const bool x_first = across <= down;
   return {x_first ? across : down, x_first ? cross_x : cross_y, 0};
@@ -281,33 +270,22 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   const auto n = gas.balls.size();
   // Cells at least 2a (1 + margin) wide, and not many more cells than balls
   // (a huge table with a few balls needs few cells).
-  const double smallest = 2 * gas.radius * (1 + margin);
-  const double most = 4.0 * static_cast<double>(n) + 16;
-  double columns = std::min(cells_along(gas.width, smallest), most);
-  double rows = std::min(cells_along(gas.height, smallest), most);
-  if (columns * rows > most) {
-    const double shrink = std::sqrt(most / (columns * rows));
-    columns = std::max(1.0, std::floor(columns * shrink));
-    rows = std::max(1.0, std::floor(rows * shrink));
-  }
-  columns_ = static_cast<int>(columns);
-  rows_ = static_cast<int>(rows);
-  cell_width_ = gas.width / columns_;
-  cell_height_ = gas.height / rows_;
+  cells_ = lay_out_cells(gas.width, gas.height, 2 * gas.radius * (1 + margin),
+                         4.0 * static_cast<double>(n) + 16);
 
   records_.assign(n + 1, Record{});
   more_predictions_.assign(n + 1, {});
   count_.assign(n + 1, 0);
   next_in_cell_.assign(n + 1, 0);
-  head_.assign(
-      static_cast<std::size_t>(columns_ + 2) * static_cast<std::size_t>(rows_ + 2), 0);
+  head_.assign(static_cast<std::size_t>(cells_.columns + 2) *
+                   static_cast<std::size_t>(cells_.rows + 2),
+               0);
   neighbours_.assign(2 * 9, 0);  // two for each of 3 x 3 cells; more if need be
   gas_ = &gas;
   const int count = static_cast<int>(n);
   for (int ball = 1; ball <= count; ++ball) {
     const Point centre = centre_at(row(ball), gas.time);
-    insert(ball, cell_of(centre.x, cell_width_, columns_),
-           cell_of(centre.y, cell_height_, rows_));
+    insert(ball, cells_.column_of(centre.x), cells_.row_of(centre.y));
   }
   // Each pair once, in the list of its lower-numbered ball.
   calendar_.reset(n);

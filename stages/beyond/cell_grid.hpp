@@ -1,13 +1,14 @@
 // Stage 4 — first collision, by a grid of cells and a calendar of events
 // (beyond the article).
 //
-// What this file does: cuts the table into cells at least 2a wide and keeps
-// every ball in the cell that holds its centre. Two balls in cells that are
-// not neighbours are more than 2a apart, so a ball is predicted only against
-// the balls of the 3 x 3 cells around its own. A ball leaving its cell is an
-// event too, a "cell crossing": the ball moves to the next cell and is
-// predicted against the balls that have just become its neighbours. A ball
-// hears of a wall only in the cells along that wall.
+// What this file does: cuts the table into cells at least 2a wide (laid out
+// by beyond/cell_layout.hpp) and keeps every ball in the cell that holds its
+// centre. Two balls in cells that are not neighbours are more than 2a apart,
+// so a ball is predicted only against the balls of the 3 x 3 cells around
+// its own. A ball leaving its cell is an event too, a "cell crossing": the
+// ball moves to the next cell and is predicted against the balls that have
+// just become its neighbours. A ball hears of a wall only in the cells along
+// that wall.
 //
 // Each ball keeps a short list of its predictions (the walls ahead of it, its
 // next crossing, the meetings it predicted), and an event calendar
@@ -51,11 +52,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "beyond/cell_layout.hpp"
+#include "beyond/event_calendar.hpp"
+#include "beyond/large_pages.hpp"
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
-#include "beyond/event_calendar.hpp"
 #include "stage4_first_collision.hpp"
-#include "beyond/large_pages.hpp"
 
 namespace gas {
 
@@ -76,10 +78,10 @@ class CellGrid final : public FirstCollisionFinder {
   const char* name() const override { return "grid"; }
 
   // The layout, for tests and the benchmark.
-  int columns() const { return columns_; }
-  int rows() const { return rows_; }
-  double cell_width() const { return cell_width_; }
-  double cell_height() const { return cell_height_; }
+  int columns() const { return cells_.columns; }
+  int rows() const { return cells_.rows; }
+  double cell_width() const { return cells_.cell_width; }
+  double cell_height() const { return cells_.cell_height; }
   // The longest list of predictions a ball holds now, for tests.
   std::uint32_t longest_list() const;
   // How much wider than 2a a cell is at least, as a fraction of 2a. Two balls
@@ -126,7 +128,8 @@ class CellGrid final : public FirstCollisionFinder {
   }
   // Cells are numbered row by row in a frame one cell wider on every side.
   std::size_t cell_index(int column, int line) const {
-    return static_cast<std::size_t>(line + 1) * static_cast<std::size_t>(columns_ + 2) +
+    return static_cast<std::size_t>(line + 1) *
+               static_cast<std::size_t>(cells_.columns + 2) +
            static_cast<std::size_t>(column + 1);
   }
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
@@ -156,8 +159,7 @@ class CellGrid final : public FirstCollisionFinder {
   std::size_t gather(int column, int line);
 
   CentreLimits limits_;
-  int columns_ = 1, rows_ = 1;
-  double cell_width_ = 0, cell_height_ = 0;
+  CellLayout cells_;                 // the cells over the table (beyond/cell_layout.hpp)
   const Gas* gas_ = nullptr;         // the gas of the last call (its rows of R)
   LargePageVector<Record> records_;  // by ball number 1..N (0 unused)
   std::vector<std::vector<Prediction>> more_predictions_;  // by ball: its list

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "beyond/kinetic_screen.hpp"
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/key_source.hpp"
 #include "program/run_outputs.hpp"

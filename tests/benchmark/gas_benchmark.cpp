@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "benchmark_build_info.hpp"
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
 #include "reference_gas.hpp"

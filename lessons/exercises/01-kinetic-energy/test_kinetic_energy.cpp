@@ -43,7 +43,8 @@ TEST_SUITE("exercise-01") {
   }
 
   EXERCISE_TEST("exercise-01 the default scene has energy 7.35 as lesson 1 says") {
-    const gas::Gas scene = gas::parse_scene(gas::default_scene_text, "default scene");
+    const gas::Gas scene = gas::build_gas(
+        gas::parse_scene_description(gas::default_scene_text, "default scene"));
     // Why 1e-14: the scene's velocities are decimals (1.3, 0.7, ...), each a
     // hair off in binary (1.1e-16 of itself); squaring and adding 14 terms
     // adds a few more such roundings, so the sum is within ~3e-15 of 7.35.

@@ -5,10 +5,10 @@
 // test pass: change your scene_text.cpp.
 //
 // Each test writes a gas with scene_text and reads the text back with the
-// project's own reader, parse_scene (stage 2), then compares. A scene always
-// starts at T = 0, so only the table, T0, the centres and the velocities
-// come back; the checks ask for them bit for bit, because that is what
-// "reads back exactly" means.
+// project's own reader (stage 2: parse_scene_description, then build_gas),
+// then compares. A scene always starts at T = 0, so only the table, T0, the
+// centres and the velocities come back; the checks ask for them bit for bit,
+// because that is what "reads back exactly" means.
 #include <doctest/doctest.h>
 
 #include <cstddef>
@@ -26,7 +26,8 @@ namespace {
 gas::Gas read_back(const std::string& text) {
   INFO("scene_text wrote:\n" << text);
   gas::Gas read;
-  REQUIRE_NOTHROW(read = gas::parse_scene(text, "your scene_text"));
+  REQUIRE_NOTHROW(
+      read = gas::build_gas(gas::parse_scene_description(text, "your scene_text")));
   return read;
 }
 

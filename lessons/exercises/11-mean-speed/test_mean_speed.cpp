@@ -42,7 +42,8 @@ TEST_SUITE("exercise-11") {
 
   EXERCISE_TEST(
       "exercise-11 the default scene's mean speed is 1.44524 as lesson 1 shows") {
-    const gas::Gas scene = gas::parse_scene(gas::default_scene_text, "default scene");
+    const gas::Gas scene = gas::build_gas(
+        gas::parse_scene_description(gas::default_scene_text, "default scene"));
     // Why 5e-6: the screen prints 6 significant digits, so the true value is
     // within half a unit of the last one, 0.000005, of 1.44524. A mean of
     // the squared speeds, or a sum not divided by N, is off by 0.5 or more.

@@ -1,5 +1,5 @@
-// Stage 2, the 'random COUNT SEED SPEED' line: large scenes the reader makes
-// itself (data/README.md).
+// Beyond the article, the scene line 'random COUNT SEED SPEED': large scenes
+// the reader makes itself (beyond/random_placement.*, data/README.md).
 //
 // - The balls are where a scene may have them: on the table, no two closer
 //   than 2a, none on top of a 'ball' line's ball; numbered after the 'ball'
@@ -9,7 +9,8 @@
 //   the bit (they follow from std::mt19937_64, whose output the C++ standard
 //   fixes, our own mapping to [0, 1), and correctly rounded arithmetic).
 // - What it refuses is in data/bad/random-*.scene (suite stage2's golden
-//   messages); here, the limits one by one.
+//   messages); here, the limits one by one (COUNT, SEED and SPEED are
+//   checked by stage 2, the density by the placement).
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <string>
 
+#include "beyond/random_placement.hpp"
 #include "stage2_input.hpp"
 
 namespace {
@@ -45,7 +47,7 @@ std::uint64_t bits(double x) {
 
 }  // namespace
 
-TEST_SUITE("stage2") {
+TEST_SUITE("random-placement") {
   TEST_CASE(
       "random: the balls lie on the table apart from each other and the ball lines") {
     const gas::Gas gas = parse(

@@ -1,0 +1,65 @@
+// Stage 4 — first collision, and stage 2's 'random' line: the table cut into
+// cells (beyond the article).
+//
+// What this file does: lays equal cells over the table, each at least a given
+// length across, and finds the cell that holds a point. With cells at least 2a
+// across, two centres in cells that are not neighbours are more than 2a apart,
+// so a ball needs to be compared only with the balls of the 3 x 3 cells around
+// its own. Two parts of the program rest on that: the cell grid of stage 4
+// (beyond/cell_grid.*), and the placement of the balls of a 'random' line
+// (beyond/random_placement.*). Both lay out their cells here.
+// Beyond the article: the article compares every ball with every other.
+// Lesson: lessons/10-scaling.md (the grid); lessons/2-input.md (the
+// 'random' line).
+//
+// Assumptions: the table's sides and the least length are positive. The
+// helpers are inline: the grid asks for cells in its hot loop.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace gas {
+
+// How many cells along a side of `length`: as many as fit with each at least
+// `smallest` long, and at least one.
+inline double cells_along(double length, double smallest) {
+  return std::max(1.0, std::floor(length / smallest));
+}
+
+// The cell of a coordinate among `cells` cells of length `length` from 0. A
+// coordinate a rounding off the table (below 0, or at its far edge) is in the
+// cell at that edge.
+inline int cell_of(double coordinate, double length, int cells) {
+  const double cell = std::floor(coordinate / length);
+  return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(cells - 1)));
+}
+
+// Cells over a table A1 x A2: `columns` across x, `rows` along y, each
+// cell_width x cell_height, numbered from 0 at the corner x = y = 0.
+struct CellLayout {
+  int columns = 1, rows = 1;
+  double cell_width = 0, cell_height = 0;
+
+  int column_of(double x) const { return cell_of(x, cell_width, columns); }
+  int row_of(double y) const { return cell_of(y, cell_height, rows); }
+};
+
+// Cells at least `smallest` across on a table `width` x `height`, but not many
+// more than `most` of them (a huge table with few balls needs few cells): if
+// there would be more, both sides get fewer cells, in proportion, so each cell
+// is only larger.
+inline CellLayout lay_out_cells(double width, double height, double smallest,
+                                double most) {
+  double columns = std::min(cells_along(width, smallest), most);
+  double rows = std::min(cells_along(height, smallest), most);
+  if (columns * rows > most) {
+    const double shrink = std::sqrt(most / (columns * rows));
+    columns = std::max(1.0, std::floor(columns * shrink));
+    rows = std::max(1.0, std::floor(rows * shrink));
+  }
+  return CellLayout{static_cast<int>(columns), static_cast<int>(rows), width / columns,
+                    height / rows};
+}
+
+}  // namespace gas
