@@ -151,7 +151,7 @@ class ConsoleRun {
       if (!press_all(pressed)) break;
       if (control_.stopped) {
         // No step; on the keyboard, the status line shows what a key did.
-        if (keys.from_keyboard() && !pressed.empty()) show();
+        if (keys.from_keyboard() && !pressed.empty()) show(figures_of(control_));
         if (keys.wait_while_stopped()) continue;
         break;  // nothing could start the model again
       }
@@ -160,8 +160,11 @@ class ConsoleRun {
       const Step step = take_step(control_, options_.until.value_or(never), trace);
       ++frames_done;
       measurements_.record(control_);
-      outputs_.record(step, figures_of(control_), measurements_.figures(control_));
-      show();  // stage 6
+      const Figures figures = figures_of(control_);
+      outputs_.record(step);
+      if (outputs_.writes_csv())
+        outputs_.write_csv(figures, measurements_.figures(control_));
+      show(figures);  // stage 6
       if (!keys.wait_after_step(step.length / control_.gas.display_step)) break;
     }
     display_.finish();
@@ -197,8 +200,7 @@ class ConsoleRun {
   }
 
   // Stage 6: draws the screen the options ask for and sends it out.
-  void show() {
-    const Figures figures = figures_of(control_);
+  void show(const Figures& figures) {
     const Tone& tone = tones[control_.tone];
     if (options_.trace)
       fmt::print("stage 6  output: the {} screen\n", mode_name(options_.mode));

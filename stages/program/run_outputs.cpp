@@ -31,16 +31,18 @@ RunOutputs::RunOutputs(const Options& options, Display& display)
   if (csv_) fmt::print(csv_.get(), "{}\n", csv_header());
 }
 
-void RunOutputs::record(const Step& step, const Figures& figures,
-                        const KineticFigures& kinetic) {
+void RunOutputs::record(const Step& step) {
   if (events_) {
     for (const Collision& c : step.collisions) {
       fmt::print(events_.get(), "{:.17g},{},{},{}\n", c.time, static_cast<int>(c.kind),
                  c.first, c.second);
     }
   }
-  if (csv_) fmt::print(csv_.get(), "{}\n", csv_row(figures, kinetic));
   if (bell_ && !step.collisions.empty()) ring_bell();
+}
+
+void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic) {
+  if (csv_) fmt::print(csv_.get(), "{}\n", csv_row(figures, kinetic));
 }
 
 void RunOutputs::finish(const Gas& gas) const {

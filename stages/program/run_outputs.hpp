@@ -44,8 +44,14 @@ class RunOutputs {
   RunOutputs(const Options& options, Display& display);
 
   // After a display step: every collision of the step to --events (T,K,N1,N2),
-  // the figures to --csv, and a ring of the bell if anything collided.
-  void record(const Step& step, const Figures& figures, const KineticFigures& kinetic);
+  // and a ring of the bell if anything collided.
+  void record(const Step& step);
+
+  // Is --csv written? (Its figures take a pass over every ball: the caller
+  // works them out only then.)
+  bool writes_csv() const { return static_cast<bool>(csv_); }
+  // After a display step: the figures to --csv, one row.
+  void write_csv(const Figures& figures, const KineticFigures& kinetic);
 
   // At the end of the run: --dump writes the gas as a scene file.
   void finish(const Gas& gas) const;
