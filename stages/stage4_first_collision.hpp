@@ -81,11 +81,12 @@ inline Collision due_from(Collision first, double now) {
   return first;
 }
 
-// The earliest collision of the gas, scanning as the article does: for each
-// ball the walls (K = 1, then K = 2), then every pair N3 < N4 (K = 3). A
+// The earliest collision of the gas, scanning in the article's order: for
+// each ball the walls (K = 1, then K = 2), then every pair N3 < N4 (K = 3). A
 // collision wins only if it is strictly earlier than the best so far, so of
-// simultaneous collisions the first one scanned is taken. TC is never earlier
-// than gas.time.
+// simultaneous collisions the first one scanned is taken. (The article's
+// wall test lets the last one scanned win a tie; lesson 4 says why we keep
+// the first.) TC is never earlier than gas.time.
 Collision find_first_collision(const Gas& gas, const CentreLimits& limits);
 
 // Stage 4 as stage 7 calls it: "a first-collision finder". The article's

@@ -328,11 +328,18 @@ struct ArticleCollision {
   int zero_divisions = 0;
 };
 
+// How the literal scan reads "N3 and N4 do not collide before TC", for which
+// the article prints no inequality: a pair replaces TC only if strictly
+// earlier, or also at a tie (as the wall's "x + vx (TC - T) < G1" does: a
+// wall reached exactly at TC fails the test and replaces it).
+enum class PairTies { kept, replaced };
+
 // The article's stage 4 for balls all written at the gas's time T: start
 // with a large TC and K = N1 = N2 = 0, scan every ball against the walls by
 // the condition above, then every pair N3 < N4 by the quadratic (D > 0, the
 // smaller root, not in the past). The limits are our contract's, a and A - a.
-ArticleCollision article_first_collision(const gas::Gas& gas, Real large) {
+ArticleCollision article_first_collision(const gas::Gas& gas, Real large,
+                                         PairTies pair_ties = PairTies::kept) {
   ArticleCollision c;
   c.time = large;
   const Real now = gas.time, a = gas.radius;
@@ -358,7 +365,9 @@ ArticleCollision article_first_collision(const gas::Gas& gas, Real large) {
       const Quadratic q = quadratic(pair);
       if (!(q.D > 0)) continue;  // D <= 0: they miss or only touch; nothing divided
       const Real root = divide(-q.B - std::sqrt(q.D), 2 * q.A, c.zero_divisions);
-      if (root >= 0 && now + root < c.time) {
+      const bool earlier = now + root < c.time ||
+                           (pair_ties == PairTies::replaced && now + root == c.time);
+      if (root >= 0 && earlier) {
         c.time = now + root;
         c.kind = 3;
         c.first = n3;
@@ -799,6 +808,103 @@ TEST_SUITE("article") {
     CHECK(kinds[1] > 50);
     CHECK(kinds[2] > 50);
     CHECK(kinds[3] > 50);
+  }
+
+  TEST_CASE(
+      "article ties: a wall reached exactly at TC replaces it; the stages keep the first "
+      "scanned") {
+    // The article's wall test "x + vx (TC - T) < G1" fails when the ball
+    // reaches the limit exactly at the TC found so far, so that wall replaces
+    // TC: of simultaneous walls the one scanned *last* wins. The stages keep
+    // the one scanned *first* (a later event must be strictly earlier). The
+    // corner: a = 1 on a 10 x 10 table, a ball at (5, 5) moving (1, 1) meets
+    // y = 9 (K = 1) and x = 9 (K = 2) both at T = 4.
+    const gas::Gas corner = table(10, 10, 1, {ball(5, 5, 1, 1)});
+    const ArticleCollision article = article_first_collision(corner, 1e30L);
+    const gas::Collision stage =
+        gas::find_first_collision(corner, gas::centre_limits(corner));
+    CHECK(article.time == 4);
+    CHECK(article.kind == 2);  // the article: the vertical wall, scanned last
+    CHECK(stage.time == 4);
+    CHECK(stage.kind ==
+          gas::CollisionKind::horizontal_wall);  // the stages: scanned first
+    // Either order, the instant ends the same: each wall flips its own
+    // component of the one ball's velocity, and flips commute.
+    const gas::CentreLimits limits = gas::centre_limits(corner);
+    auto both_walls = [&](gas::CollisionKind first, gas::CollisionKind second) {
+      gas::Gas g = corner;
+      g.time = 4;
+      gas::apply_collision(g, limits, {4, first, 1, 0});
+      gas::apply_collision(g, limits, {4, second, 1, 0});
+      return g.balls[0];
+    };
+    const gas::Ball ours = both_walls(gas::CollisionKind::horizontal_wall,
+                                      gas::CollisionKind::vertical_wall);
+    const gas::Ball articles = both_walls(gas::CollisionKind::vertical_wall,
+                                          gas::CollisionKind::horizontal_wall);
+    CHECK(ours.x == articles.x);
+    CHECK(ours.y == articles.y);
+    CHECK(ours.vx == articles.vx);
+    CHECK(ours.vy == articles.vy);
+    CHECK(ours.vx == -1);
+    CHECK(ours.vy == -1);
+    // And stage 7 carries out both at the instant, in the stages' order.
+    gas::Control control = gas::start_control(table(10, 10, 1, {ball(5, 5, 1, 1)}, 8));
+    const gas::Step step = gas::take_step(control, gas::never, nullptr);
+    REQUIRE(step.collisions.size() == 2);
+    CHECK(step.collisions[0].kind == gas::CollisionKind::horizontal_wall);
+    CHECK(step.collisions[1].kind == gas::CollisionKind::vertical_wall);
+    CHECK(control.gas.balls[0].vx == -1);
+    CHECK(control.gas.balls[0].vy == -1);
+  }
+
+  TEST_CASE(
+      "article ties: where simultaneous collisions share a ball the order decides") {
+    // For pairs the article prints no inequality ("N3 and N4 do not collide
+    // before TC"). Read like its wall test, a pair meeting exactly at TC
+    // would replace it and the later pair would win. Then the order matters:
+    // ball 2 at rest is struck at T = 3 by ball 1 along x and by ball 3 along
+    // (3, 4)/5, both meetings exact in floating point (a = 5: the centres
+    // 10 apart along (1, 0) and along (6, 8)).
+    const gas::Gas g = table(
+        100, 100, 5, {ball(34, 50, 2, 0), ball(50, 50, 0, 0), ball(65, 70, -3, -4)}, 8);
+    REQUIRE(gas::pair_time(g, 1, 2) == 3);
+    REQUIRE(gas::pair_time(g, 2, 3) == 3);
+    const gas::Collision stage = gas::find_first_collision(g, gas::centre_limits(g));
+    CHECK(stage.kind == gas::CollisionKind::balls);
+    CHECK(stage.first == 1);  // the stages: (1, 2), scanned first
+    CHECK(stage.second == 2);
+    const ArticleCollision kept = article_first_collision(g, 1e30L, PairTies::kept);
+    CHECK(kept.first == 1);
+    CHECK(kept.second == 2);
+    const ArticleCollision replaced =
+        article_first_collision(g, 1e30L, PairTies::replaced);
+    CHECK(replaced.first == 2);  // read like the wall test: (2, 3), scanned last
+    CHECK(replaced.second == 3);
+    // Stage 7 carries out the stages' order, (1, 2) first, until nothing is
+    // due at T = 3; starting with (2, 3) instead ends the instant elsewhere.
+    gas::Control ours = gas::start_control(g);
+    gas::take_step(ours, gas::never, nullptr);
+    REQUIRE(ours.gas.time == 3);
+    gas::Gas other = g;
+    other.time = 3;
+    const gas::CentreLimits limits = gas::centre_limits(g);
+    gas::apply_collision(other, limits, {3, gas::CollisionKind::balls, 2, 3});
+    for (gas::Collision c = gas::find_first_collision(other, limits);
+         c.kind != gas::CollisionKind::none && c.time <= 3;
+         c = gas::find_first_collision(other, limits)) {
+      gas::apply_collision(other, limits, c);
+    }
+    // Why 1e-12: velocities of order 1 after three collisions, each exact to
+    // a few ulps; the two orders differ by more than 1 (ball 1 leaves at
+    // -1.72 one way, -3 the other).
+    CHECK(std::fabs(ours.gas.balls[0].vx - -1.72) < 1e-12);
+    CHECK(std::fabs(other.balls[0].vx - -3) < 1e-12);
+    // Both conserve the energy: neither order is wrong physics, it is a
+    // three-ball event that the two-ball formula VI does not describe, and
+    // each program must pick an order. The stages pick the scan's first.
+    CHECK(gas::kinetic_energy(ours.gas) == doctest::Approx(gas::kinetic_energy(g)));
+    CHECK(gas::kinetic_energy(other) == doctest::Approx(gas::kinetic_energy(g)));
   }
 
   // =========================================================================
