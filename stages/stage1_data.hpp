@@ -66,12 +66,16 @@ inline Point centre_at(const Ball& ball, double time) {
 std::vector<Point> centres_at(const Gas& gas, double time);
 
 // Kinetic energy (unit mass): sum of (vx^2 + vy^2) / 2.
+// [anchor: kinetic-energy-declaration]
 double kinetic_energy(const Gas& gas);
+// [/anchor: kinetic-energy-declaration]
 
 // Total momentum (unit mass): the sum of the velocities.
 Point total_momentum(const Gas& gas);
 
 // Mean speed: the average of sqrt(vx^2 + vy^2); 0 for no balls.
+// [anchor: mean-speed-declaration]
 double mean_speed(const Gas& gas);
+// [/anchor: mean-speed-declaration]
 
 }  // namespace gas

@@ -96,6 +96,8 @@ Gas build_gas(const SceneDescription& scene);
 // The gas as a scene file that stage 2 reads back: the centres at the present
 // time T, every number with 17 significant digits (enough to give back the
 // same double).
+// [anchor: scene-text-declaration]
 std::string scene_text(const Gas& gas);
+// [/anchor: scene-text-declaration]
 
 }  // namespace gas

@@ -50,6 +50,7 @@ struct Cell {
 inline constexpr double cell_aspect = 2.0;
 
 // The text screen: the table inside a border of '+', '-' and '|'.
+// [anchor: text-screen]
 struct TextScreen {
   int columns = 0;                 // grid width, border included
   int rows = 0;                    // grid height, border included
@@ -71,6 +72,7 @@ struct TextScreen {
                 [static_cast<std::size_t>(cell.column)];
   }
 };
+// [/anchor: text-screen]
 
 // The smallest grid (border included) that `prepare_screen` accepts.
 inline constexpr int smallest_columns = 8;

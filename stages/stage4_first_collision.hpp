@@ -44,13 +44,17 @@ struct Collision {
 // limit it is moving towards (`low` if moving down, `high` if moving up).
 // Never divides by zero: a centre at rest along this axis reaches no wall.
 // A centre already at or beyond that limit reaches it now (0).
+// [anchor: time-to-wall-declaration]
 double time_to_wall(double position, double velocity, double low, double high);
+// [/anchor: time-to-wall-declaration]
 
 // The model time at which the centres of balls p and q come 2a apart while
 // approaching each other, or `never`. Balls that already touch or overlap
 // (round-off) and are approaching collide at once; balls moving apart, or
 // at rest relative to each other, never collide.
+// [anchor: time-of-contact-declaration]
 double time_of_contact(const Ball& p, const Ball& q, double diameter);
+// [/anchor: time-of-contact-declaration]
 
 // The scan's time for ball `number` (1..N) to reach a wall of kind K = 1
 // (y = a or y = A2 - a) or K = 2 (x = a or x = A1 - a): its time plus
@@ -87,7 +91,9 @@ inline Collision due_from(Collision first, double now) {
 // simultaneous collisions the first one scanned is taken. (The article's
 // wall test lets the last one scanned win a tie; lesson 4 says why we keep
 // the first.) TC is never earlier than gas.time.
+// [anchor: find-first-collision-declaration]
 Collision find_first_collision(const Gas& gas, const CentreLimits& limits);
+// [/anchor: find-first-collision-declaration]
 
 // Stage 4 as stage 7 calls it: "a first-collision finder". The article's
 // scan is one (ArticleScan, below); faster ones that keep their predictions

@@ -48,11 +48,15 @@ struct Picture {
 
 // Shifts the clock to `new_time` (T + T1): the centres drawn so far become the
 // old ones, and the centres at the new time are computed.
+// [anchor: shift-time-declaration]
 void shift_time(Gas& gas, Picture& picture, double new_time);
+// [/anchor: shift-time-declaration]
 
 // The new velocities of two balls in contact, by the article's VI formula.
 // Requires p != q. Only the components along the line of centres change.
+// [anchor: collide-balls-declaration]
 void collide_balls(Ball& p, Ball& q);
+// [/anchor: collide-balls-declaration]
 
 // Carries out a collision found by stage 4 at its time TC: moves the ball(s)
 // involved to TC and gives them their new velocities. A ball hitting a wall is

@@ -39,7 +39,9 @@ inline constexpr Tone tones[2] = {{'O', '.', 36}, {'@', '+', 33}};
 // The cells of a ball's image centred at `centre`: every cell whose middle is
 // within a of the centre, and always the centre's own cell (a ball smaller
 // than a character is one glyph).
+// [anchor: ball-image-declaration]
 std::vector<Cell> ball_image(const TextScreen& screen, Point centre, double radius);
+// [/anchor: ball-image-declaration]
 
 // Balls screen: erase every old image (RS), then draw every new one.
 void draw_balls(TextScreen& screen, const Picture& picture, double radius,

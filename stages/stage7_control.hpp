@@ -91,6 +91,8 @@ enum class KeyEffect { none, redraw, end };
 // Carries out a key (case does not matter): S stop, R start, B reverse every
 // velocity and change the tone, > double T0, < halve T0, 0 redraw, E end.
 // Other keys, and '.', do nothing.
+// [anchor: press-key-declaration]
 KeyEffect press_key(Control& control, char key);
+// [/anchor: press-key-declaration]
 
 }  // namespace gas

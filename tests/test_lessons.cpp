@@ -10,9 +10,17 @@
 //                                        standard output of `gas ARGS` (ARGS
 //                                        split on spaces, run from the source
 //                                        directory, standard input /dev/null)
+//   <!-- unchecked: WHY -->              followed by a ```cpp or ```text block
+//                                        that nothing can check (a sketch, an
+//                                        example of a format), and WHY not
+//
+// A lesson is every .md file under lessons/, the exercises' instructions
+// included. Every ```cpp and every ```text block of a lesson has one of these
+// three lines just before it.
 //
 // This file checks that the anchors in stages/ are well formed, that every
-// quoted block is what it claims to be, and that the lessons named by
+// quoted block is what it claims to be, that no cpp or text block goes
+// unchecked without a note saying why, and that the lessons named by
 // lessons/README.md and by the stages' "Lesson:" lines exist. With
 // GAS_UPDATE_GOLDEN=1 the quoted blocks are rewritten in place instead (a
 // teacher's regeneration after a code change: then read the diff).
@@ -203,11 +211,14 @@ std::vector<std::string> split_on_spaces(const std::string& text) {
   return words;
 }
 
+// The markers of a lesson, each alone on its line.
+const std::regex code_marker(R"(^<!-- code: (\S+) (\S+) -->$)");
+const std::regex output_marker(R"(^<!-- output:(.*)-->$)");
+const std::regex unchecked_note(R"(^<!-- unchecked: \S.*\S -->$)");
+
 // Finds the quoted blocks of a lesson. Markers are looked for only outside
 // fenced blocks, so a lesson can show the syntax inside a fence.
 std::vector<Quote> find_quotes(const std::vector<std::string>& lines) {
-  static const std::regex code_marker(R"(^<!-- code: (\S+) (\S+) -->$)");
-  static const std::regex output_marker(R"(^<!-- output:(.*)-->$)");
   std::vector<Quote> quotes;
   bool in_fence = false;
   for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -265,6 +276,59 @@ std::vector<Quote> find_quotes(const std::vector<std::string>& lines) {
     i = end;  // the closing fence: not a fence to toggle
   }
   return quotes;
+}
+
+// The language of a fence that opens a block, "cpp" for "```cpp": its first
+// word.
+std::string fence_language(const std::string& fence) {
+  const std::vector<std::string> words = split_on_spaces(fence.substr(3));
+  return words.empty() ? std::string() : words.front();
+}
+
+// Checks that every ```cpp and every ```text block of a lesson is either
+// quoted (a code or output marker on the line before it; find_quotes checks
+// the marker itself) or says on the line before it why it is not checked:
+// "<!-- unchecked: WHY -->". Also finds such notes that are malformed or
+// stand before no such block. Returns the problems, each "LINE: ...".
+std::vector<std::string> unchecked_blocks(const std::vector<std::string>& lines) {
+  std::vector<std::string> problems;
+  const auto opens_checked_block = [&](std::size_t i) {
+    if (i >= lines.size() || lines[i].rfind("```", 0) != 0) return false;
+    const std::string language = fence_language(lines[i]);
+    return language == "cpp" || language == "text";
+  };
+  bool in_fence = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    const int number = static_cast<int>(i) + 1;
+    if (line.rfind("```", 0) == 0) {
+      in_fence = !in_fence;
+      if (!in_fence || !opens_checked_block(i)) continue;
+      const std::string before = i > 0 ? lines[i - 1] : std::string();
+      if (before.rfind("<!-- code:", 0) == 0 || before.rfind("<!-- output:", 0) == 0 ||
+          std::regex_match(before, unchecked_note))
+        continue;
+      problems.push_back(fmt::format(
+          "{}: a ```{} block that nothing checks: put '<!-- code: stages/FILE NAME -->' "
+          "or '<!-- output: ARGS -->' on the line before it, or, if it cannot be "
+          "checked, '<!-- unchecked: WHY -->'",
+          number, fence_language(line)));
+      continue;
+    }
+    if (in_fence || line.rfind("<!-- unchecked:", 0) != 0) continue;
+    if (!std::regex_match(line, unchecked_note)) {
+      problems.push_back(
+          fmt::format("{}: a malformed note: write '<!-- unchecked: WHY -->' alone on "
+                      "its line",
+                      number));
+    } else if (!opens_checked_block(i + 1)) {
+      problems.push_back(
+          fmt::format("{}: '<!-- unchecked: ... -->' must stand just before a ```cpp or "
+                      "```text block",
+                      number));
+    }
+  }
+  return problems;
 }
 
 // The first line where two texts differ, for messages.
@@ -531,6 +595,81 @@ TEST_SUITE("lessons") {
           "block line 1: the lesson has 'int x = 1;', the real text has 'int x = 2;'");
     CHECK(split_on_spaces(" --keys  S>>R.B --until 80 ") ==
           std::vector<std::string>{"--keys", "S>>R.B", "--until", "80"});
+  }
+
+  TEST_CASE("lessons: the block rule finds a cpp or text block that nothing checks") {
+    // This test proves that the next one can fail: a made-up lesson with
+    // a quoted block of each kind, a block that says why it is not checked,
+    // and blocks the rule does not ask about (sh, a bare fence).
+    const std::vector<std::string> good = {
+        "# A lesson",                                             // 1
+        "<!-- code: stages/none.cpp x -->",                       // 2
+        "```cpp",                                                 // 3
+        "int x;",                                                 // 4
+        "```",                                                    // 5
+        "<!-- output: --frames 1 -->",                            // 6
+        "```text",                                                // 7
+        "T=1",                                                    // 8
+        "```",                                                    // 9
+        "<!-- unchecked: a sketch, not code of the project -->",  // 10
+        "```cpp",                                                 // 11
+        "sketch();",                                              // 12
+        "```",                                                    // 13
+        "```sh",                                                  // 14
+        "build/gas",                                              // 15
+        "```",                                                    // 16
+        "```",                                                    // 17
+        "VI = (d·w) / 4a²",                                       // 18
+        "```",                                                    // 19
+    };
+    CHECK(unchecked_blocks(good).empty());
+
+    // The same lesson with its note, then one of its markers, taken away.
+    std::vector<std::string> no_note = good;
+    no_note.erase(no_note.begin() + 9);  // line 10
+    REQUIRE(unchecked_blocks(no_note).size() == 1);
+    CHECK(unchecked_blocks(no_note)[0].rfind("10: a ```cpp block that nothing checks",
+                                             0) == 0);
+    std::vector<std::string> no_marker = good;
+    no_marker.erase(no_marker.begin() + 5);  // line 6
+    REQUIRE(unchecked_blocks(no_marker).size() == 1);
+    CHECK(unchecked_blocks(no_marker)[0].rfind("6: a ```text block that nothing checks",
+                                               0) == 0);
+
+    // A blank line between the note and its block, a note without a reason,
+    // a note before a block the rule does not ask about.
+    const std::vector<std::string> bad = {
+        "<!-- unchecked: a sketch -->",   // 1
+        "",                               // 2
+        "```cpp",                         // 3
+        "```",                            // 4
+        "<!-- unchecked: -->",            // 5
+        "```text",                        // 6
+        "```",                            // 7
+        "<!-- unchecked: a command -->",  // 8
+        "```sh",                          // 9
+        "```",                            // 10
+    };
+    const std::vector<std::string> problems = unchecked_blocks(bad);
+    REQUIRE(problems.size() == 5);
+    CHECK(problems[0].rfind("1: '<!-- unchecked: ... -->' must stand just before", 0) ==
+          0);
+    CHECK(problems[1].rfind("3: a ```cpp block that nothing checks", 0) == 0);
+    CHECK(problems[2].rfind("5: a malformed note", 0) == 0);
+    CHECK(problems[3].rfind("6: a ```text block that nothing checks", 0) == 0);
+    CHECK(problems[4].rfind("8: '<!-- unchecked: ... -->' must stand just before", 0) ==
+          0);
+  }
+
+  TEST_CASE("lessons: every cpp and text block of a lesson is checked or says why not") {
+    std::vector<std::string> problems;
+    for (const std::string& lesson : lesson_files()) {
+      for (const std::string& problem :
+           unchecked_blocks(lines_of(read_file(source_path(lesson))))) {
+        problems.push_back(fmt::format("{}:{}", lesson, problem));
+      }
+    }
+    CHECK_MESSAGE(problems.empty(), "unchecked blocks:" << joined(problems));
   }
 
   TEST_CASE(
