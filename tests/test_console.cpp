@@ -11,14 +11,21 @@
 //   data/golden/runs/ (balls, trails, stats, the keys ..B.., --trace).
 // - --trace says what stages 1, 2 and 3 set up (the variables, the scene
 //   read, G1, G2 and the screen) before the first stage 4.
+// - --trace marks stage 6 "frozen at the collision" at exactly the steps
+//   that end on one (the moments of --events).
+// - The key 0: stage 3 again, so the trails screen after it holds the new
+//   step's segments alone, inside a whole border.
 // - The files: --events and --csv (headers, one row per collision and per
 //   frame), --dump (a scene read_scene_file accepts, equal to the same run
 //   done in this process).
+// - --bell: a '\a' for a run with collisions, none without --bell; at most
+//   one every bell_interval_seconds (bell_may_ring, and the program itself).
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -30,6 +37,7 @@
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
+#include "program/run_outputs.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 #include "support.hpp"
@@ -95,6 +103,19 @@ std::vector<Frame> frames_of(const std::string& out) {
     frames.push_back(frame);
   }
   return frames;
+}
+
+// The distinct moments of the collisions in an --events file, in order: the
+// moments at which a display step ended on a collision. (T is written with
+// 17 significant digits, so each reads back to the same double.)
+std::vector<double> collision_moments(const std::string& events_path) {
+  std::vector<double> moments;
+  const std::vector<std::string> lines = lines_of(read_file(events_path));
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const double t = std::stod(lines[i].substr(0, lines[i].find(',')));
+    if (moments.empty() || moments.back() != t) moments.push_back(t);
+  }
+  return moments;
 }
 
 // Is the screen a box of '+', '-', '|' around its inside, every line as wide?
@@ -352,6 +373,82 @@ TEST_SUITE("console") {
     CHECK(stats_lines[4] == "stage 3  screen preparation: figures only, no table");
   }
 
+  TEST_CASE(
+      "--trace: stage 6 says 'frozen at the collision' at exactly the steps that end on "
+      "one") {
+    // The crowd (many collisions, each at a moment of its own), and the
+    // touching balls (three collisions at T = 0, in one step: one mark).
+    for (const std::string scene : {"data/crowd.scene", "data/edge/touching.scene"}) {
+      CAPTURE(scene);
+      const Scratch scratch;
+      const std::string events = scratch.file("events.csv");
+      const auto run = run_program({scene, "--trace", "--until", "60", "--cols", "30",
+                                    "--rows", "9", "--events", events});
+      REQUIRE(run.status == 0);
+      const std::string plain = "stage 6  output: the balls screen";
+      const std::string frozen = plain + ", frozen at the collision T = TC = ";
+      std::vector<double> marked;
+      std::size_t stage6_lines = 0;
+      for (const std::string& line : lines_of(run.out)) {
+        if (line.rfind("stage 6  ", 0) != 0) continue;
+        ++stage6_lines;
+        if (line.rfind(frozen, 0) == 0) {
+          marked.push_back(std::stod(line.substr(frozen.size())));
+        } else {
+          CHECK(line == plain);
+        }
+      }
+      CHECK(stage6_lines == frames_of(run.out).size());  // one a frame
+      // T is printed shortest round-trip: each mark reads back to the same
+      // double as the collision's moment in --events.
+      const std::vector<double> moments = collision_moments(events);
+      CHECK(moments.size() >= 1);
+      CHECK(marked == moments);
+    }
+  }
+
+  TEST_CASE(
+      "the key 0: stage 3 again, so the trails screen after it holds the new step "
+      "alone") {
+    // Trails are never erased; after 0 the screen is prepared again, and the
+    // ninth step draws its segments on an empty table. The same steps done
+    // here give that screen exactly.
+    auto with_keys = [](const std::string& keys) {
+      const auto run =
+          run_program({"data/trajectories.scene", "--mode", "trails", "--keys", keys,
+                       "--frames", "9", "--cols", "60", "--rows", "20"});
+      REQUIRE(run.status == 0);
+      return frames_of(run.out);
+    };
+    const std::vector<Frame> redrawn = with_keys(">>>>....0");
+    const std::vector<Frame> kept = with_keys(">>>>.....");
+    REQUIRE(redrawn.size() == 9);
+    REQUIRE(kept.size() == 9);
+
+    gas::Control control = gas::start_control_for(
+        gas::read_scene_file(source_path("data/trajectories.scene")));
+    for (const char key : std::string(">>>>....")) {
+      gas::press_key(control, key);
+      gas::take_step(control, gas::never, nullptr);
+    }
+    gas::TextScreen screen = gas::prepare_screen(control.gas, 60, 18);  // stage 3
+    gas::take_step(control, gas::never, nullptr);
+    gas::draw_trails(screen, control.picture, gas::tones[0]);  // stage 6
+
+    CHECK(redrawn[8].screen == screen.lines);
+    CHECK(bordered(redrawn[8].screen));
+    CHECK(redrawn[8].status == kept[8].status);  // the same step, T and all
+    // Without 0 the earlier trails stay: there was something to clear.
+    CHECK(kept[8].screen != redrawn[8].screen);
+    auto trail_cells = [](const Frame& frame) {
+      std::size_t cells = 0;
+      for (const std::string& line : frame.screen)
+        cells += std::count(line.begin(), line.end(), gas::tones[0].trail_glyph);
+      return cells;
+    };
+    CHECK(trail_cells(redrawn[8]) < trail_cells(redrawn[7]));
+  }
+
   TEST_CASE("the keys ..B..: after B the balls retrace their steps in the other tone") {
     // B is pressed before the third step, at T = 2, so the frame at T = 3
     // shows the balls where they were at T = 1 (no collision before T = 34).
@@ -465,6 +562,70 @@ TEST_SUITE("console") {
     CHECK(run.status == 1);
     CHECK(run.out.empty());
     CHECK(run.err == "gas: /no-such-dir/e.csv: cannot write this file\n");
+  }
+
+  TEST_CASE("--bell: a bell for a run with collisions, and none without --bell") {
+    // The crowd has collisions before T = 60 (the --events test counts them).
+    const auto rung = run_program({"data/crowd.scene", "--bell", "--until", "60",
+                                   "--mode", "stats", "--cols", "8", "--rows", "7"});
+    REQUIRE(rung.status == 0);
+    CHECK(std::count(rung.out.begin(), rung.out.end(), '\a') >= 1);
+
+    const auto silent = run_program({"data/crowd.scene", "--until", "60", "--mode",
+                                     "stats", "--cols", "8", "--rows", "7"});
+    REQUIRE(silent.status == 0);
+    CHECK(std::count(silent.out.begin(), silent.out.end(), '\a') == 0);
+  }
+
+  TEST_CASE("--bell: at most one bell every bell_interval_seconds") {
+    using Clock = std::chrono::steady_clock;
+    using std::chrono::milliseconds;
+    const auto interval = std::chrono::duration<double>(gas::bell_interval_seconds);
+
+    SUBCASE("bell_may_ring: only once the interval has passed since the last ring") {
+      const Clock::time_point last = Clock::time_point{} + std::chrono::hours(1);
+      CHECK_FALSE(gas::bell_may_ring(last, last));
+      CHECK_FALSE(gas::bell_may_ring(last, last + milliseconds(149)));
+      CHECK(gas::bell_may_ring(last, last + milliseconds(151)));
+
+      // A collision every 7 ms for a second, the bell rung as RunOutputs does
+      // (it starts with "last rang" at the clock's epoch, long ago): rings at
+      // 0, 154, 308, 462, 616, 770 and 924 ms, each the first multiple of 7
+      // at least 150 ms after the last (no moment falls on the boundary).
+      Clock::time_point rang{};
+      std::vector<long long> rings;
+      for (int ms = 0; ms <= 1000; ms += 7) {
+        const Clock::time_point now = last + milliseconds(ms);
+        if (gas::bell_may_ring(rang, now)) {
+          rings.push_back(ms);
+          rang = now;
+        }
+      }
+      CHECK(rings == std::vector<long long>{0, 154, 308, 462, 616, 770, 924});
+    }
+
+    SUBCASE("the program: hundreds of collision steps in a fraction of a second") {
+      // The crowd until T = 500: about 600 steps end on a collision, and the
+      // whole run (process start included) takes a tenth of a second or so.
+      // Bells at least an interval apart, all within `elapsed`, number at
+      // most elapsed / interval + 1: a sure bound, no tolerance needed.
+      const Scratch scratch;
+      const std::string events = scratch.file("events.csv");
+      const auto start = Clock::now();
+      const auto run =
+          run_program({"data/crowd.scene", "--bell", "--until", "500", "--mode", "stats",
+                       "--cols", "8", "--rows", "7", "--events", events});
+      const auto elapsed = Clock::now() - start;
+      REQUIRE(run.status == 0);
+      const double most_bells = elapsed / interval + 1;
+      const auto bells = std::count(run.out.begin(), run.out.end(), '\a');
+      CAPTURE(most_bells);
+      CHECK(bells >= 1);
+      CHECK(static_cast<double>(bells) <= most_bells);
+      // The check means something only if a bell at every collision step
+      // would break it (it would, unless the run took about a minute).
+      CHECK(static_cast<double>(collision_moments(events).size()) > most_bells);
+    }
   }
 
 }  // TEST_SUITE

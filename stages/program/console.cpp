@@ -164,7 +164,7 @@ class ConsoleRun {
       outputs_.record(step);
       if (outputs_.writes_csv())
         outputs_.write_csv(figures, measurements_.figures(control_));
-      show(figures);  // stage 6
+      show(figures, !step.collisions.empty());  // stage 6
       if (!keys.wait_after_step(step.length / control_.gas.display_step)) break;
     }
     display_.finish();
@@ -199,11 +199,17 @@ class ConsoleRun {
                : prepare_screen(control_.gas, grid_.columns, grid_.rows);
   }
 
-  // Stage 6: draws the screen the options ask for and sends it out.
-  void show(const Figures& figures) {
+  // Stage 6: draws the screen the options ask for and sends it out. With
+  // --trace it says when the step ended on a collision (T = TC): the
+  // article's picture freezes there while stage 4 computes the next one.
+  void show(const Figures& figures, bool at_collision = false) {
     const Tone& tone = tones[control_.tone];
-    if (options_.trace)
-      fmt::print("stage 6  output: the {} screen\n", mode_name(options_.mode));
+    if (options_.trace) {
+      fmt::print("stage 6  output: the {} screen{}\n", mode_name(options_.mode),
+                 at_collision ? fmt::format(", frozen at the collision T = TC = {}",
+                                            control_.gas.time)
+                              : "");
+    }
     switch (options_.mode) {
       case ScreenMode::balls:
         draw_balls(screen_, control_.picture, control_.gas.radius, tone);

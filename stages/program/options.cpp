@@ -229,7 +229,8 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|s
   --cols N         screen width in characters (default: the terminal's, else 80)
   --rows N         screen height in characters (default: the terminal's, else 24)
   --step           wait for Enter after every display step (a line may hold keys)
-  --trace          print each stage of the article as it runs, with T, T1, TC, K, N1, N2
+  --trace          print each stage of the article as it runs, with T, T1, TC, K, N1, N2;
+                   stage 6 says when the picture is frozen at a collision
   --bell           ring the terminal bell on collisions
   --strategy S     how stage 4 finds the first collision: scan (the article's),
                    table (each ball's next event) or grid (cells and an event

@@ -8,12 +8,11 @@
 #include "stage2_input.hpp"
 
 namespace gas {
-namespace {
 
-// The bell rings at most this often, so that a crowd does not buzz.
-constexpr double bell_interval_seconds = 0.15;
-
-}  // namespace
+bool bell_may_ring(std::chrono::steady_clock::time_point last,
+                   std::chrono::steady_clock::time_point now) {
+  return now - last >= std::chrono::duration<double>(bell_interval_seconds);
+}
 
 OutputFile::OutputFile(const std::optional<std::string>& path) {
   if (!path) return;
@@ -53,7 +52,7 @@ void RunOutputs::finish(const Gas& gas) const {
 
 void RunOutputs::ring_bell() {
   const auto now = std::chrono::steady_clock::now();
-  if (now - last_bell_ >= std::chrono::duration<double>(bell_interval_seconds)) {
+  if (bell_may_ring(last_bell_, now)) {
     display_.bell();
     last_bell_ = now;
   }

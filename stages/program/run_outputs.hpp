@@ -22,6 +22,15 @@
 
 namespace gas {
 
+// --bell: the bell rings at most once in this many seconds (about seven times
+// a second), so that a crowd does not buzz.
+inline constexpr double bell_interval_seconds = 0.15;
+
+// --bell: may the bell ring at `now`, when it last rang at `last`? Only once
+// bell_interval_seconds have passed since.
+bool bell_may_ring(std::chrono::steady_clock::time_point last,
+                   std::chrono::steady_clock::time_point now);
+
 // A file to write, closed when the object dies; none if no path was given.
 class OutputFile {
  public:
@@ -57,7 +66,7 @@ class RunOutputs {
   void finish(const Gas& gas) const;
 
  private:
-  // --bell: rings at most every bell_interval_seconds, so a crowd does not buzz.
+  // --bell: rings now, if bell_may_ring.
   void ring_bell();
 
   OutputFile events_;                                  // --events
