@@ -2,6 +2,7 @@
 #include "program/console.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -133,16 +134,12 @@ class ConsoleRun {
   int run() {
     if (options_.trace)
       trace_preparation(control_.gas, scene_name(), screen_, options_.mode);
-    if (terminal_) install_interrupt_flag();
+    install_interrupt_flag();  // Ctrl-C, SIGTERM, SIGHUP: end the run as E would
     KeySource keys(options_, keyboard_);
     std::FILE* const trace = options_.trace ? stdout : nullptr;
     long long frames_done = 0;
-    int status = 0;
     while (true) {
-      if (interrupted()) {
-        status = 1;
-        break;
-      }
+      if (interrupted() || outputs_.failure()) break;
       if (frame_limit_ && frames_done >= *frame_limit_) break;
       if (options_.until && control_.gas.time >= *options_.until) break;
 
@@ -167,12 +164,32 @@ class ConsoleRun {
       show(figures, !step.collisions.empty());  // stage 6
       if (!keys.wait_after_step(step.length / control_.gas.display_step)) break;
     }
+    // However the run ends: the terminal put back, the files closed whole.
     display_.finish();
     outputs_.finish(control_.gas);
-    return status;
+    return ending();
   }
 
  private:
+  // The exit status, and what stderr says about an unusual end: a file that
+  // could not be written (1), or a signal (128 + its number: 130 for SIGINT,
+  // 143 for SIGTERM, 129 for SIGHUP, as shells expect).
+  int ending() const {
+    if (const auto failure = outputs_.failure()) {
+      fmt::print(stderr, "gas: {} (at T = {:.17g})\n", *failure, control_.gas.time);
+      return 1;
+    }
+    if (!interrupted()) return 0;
+    const std::vector<std::string> files = outputs_.written();
+    fmt::print(stderr, "gas: interrupted by {} at T = {:.17g} after {} collisions{}\n",
+               signal_name(interrupting_signal()), control_.gas.time,
+               control_.wall_collisions + control_.ball_collisions,
+               files.empty()
+                   ? std::string()
+                   : fmt::format("; written whole: {}", fmt::join(files, ", ")));
+    return 128 + interrupting_signal();
+  }
+
   // Where stage 2 read the scene: its file, or the default scene built in.
   std::string scene_name() const {
     return options_.scene_path ? *options_.scene_path

@@ -245,7 +245,10 @@ keys (in a terminal, without Enter): S stop, R run, B reverse all velocities,
 When the output is not a terminal, every frame is printed whole, headed by a
 status line; with no --frames or --until the run stops after 100 frames (or
 as many as --keys has keys, if more).
-Exit status: 0 success, 2 bad usage or bad scene, 1 any other failure.
+Ctrl-C, SIGTERM and SIGHUP end the run as E does: files whole, the dump written.
+Exit status: 0 success, 2 bad usage or bad scene, 1 any other failure (a file
+that cannot be written, say); after a signal 128 + its number (130 for Ctrl-C,
+143 for SIGTERM, 129 for SIGHUP).
 )";
 }
 

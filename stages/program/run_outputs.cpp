@@ -3,6 +3,13 @@
 
 #include <fmt/format.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <iterator>
 #include <stdexcept>
 
 #include "stage2_input.hpp"
@@ -16,38 +23,114 @@ bool bell_may_ring(std::chrono::steady_clock::time_point last,
 
 OutputFile::OutputFile(const std::optional<std::string>& path) {
   if (!path) return;
+  path_ = *path;
   file_.reset(std::fopen(path->c_str(), "w"));
   if (!file_) throw std::runtime_error(fmt::format("{}: cannot write this file", *path));
+}
+
+void OutputFile::fail() {
+  if (!failure_)
+    failure_ = fmt::format("{}: cannot be written ({})", path_, std::strerror(errno));
+}
+
+void OutputFile::write(std::string_view text) {
+  if (!file_ || failure_) return;
+  if (std::fwrite(text.data(), 1, text.size(), file_.get()) != text.size()) fail();
+}
+
+void OutputFile::close() {
+  if (!file_) return;
+  if (!failure_ && (std::fflush(file_.get()) != 0 || std::ferror(file_.get()) != 0))
+    fail();
+  if (std::fclose(file_.release()) != 0) fail();
+}
+
+std::optional<std::string> write_whole(const std::string& path, const std::string& text) {
+  // The new file beside the old one (a rename stays within one file system).
+  std::string temporary = path + ".XXXXXX";
+  const int descriptor = mkstemp(temporary.data());
+  if (descriptor < 0)
+    return fmt::format("{}: cannot be written ({})", path, std::strerror(errno));
+  // mkstemp makes the file for its owner alone; give it the permissions
+  // any new file gets (0666 less the umask), as fopen would.
+  const mode_t mask = umask(0);
+  umask(mask);
+  fchmod(descriptor, 0666 & ~mask);
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t wrote = ::write(descriptor, text.data() + done, text.size() - done);
+    if (wrote < 0 && errno == EINTR) continue;  // a signal: the flag is seen later
+    if (wrote <= 0) break;
+    done += static_cast<std::size_t>(wrote);
+  }
+  const std::string reason = std::strerror(errno);
+  // Whole on the disk before it takes the old file's name.
+  const bool whole = done == text.size() && fsync(descriptor) == 0;
+  const bool closed = ::close(descriptor) == 0;
+  if (!whole || !closed || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string why = whole && closed ? std::strerror(errno) : reason;
+    std::remove(temporary.c_str());
+    return fmt::format("{}: cannot be written ({})", path, why);
+  }
+  return std::nullopt;
 }
 
 RunOutputs::RunOutputs(const Options& options, Display& display)
     : events_(options.events_path),
       csv_(options.csv_path),
+      events_path_(options.events_path),
+      csv_path_(options.csv_path),
       dump_path_(options.dump_path),
       bell_(options.bell),
       display_(display) {
-  if (events_) fmt::print(events_.get(), "T,K,N1,N2\n");
-  if (csv_) fmt::print(csv_.get(), "{}\n", csv_header());
+  // A dump is written at the end; whether it can be is asked now, so that a
+  // bad path fails before the run, not after it.
+  if (dump_path_) {
+    std::string probe = *dump_path_ + ".XXXXXX";
+    const int descriptor = mkstemp(probe.data());
+    if (descriptor < 0)
+      throw std::runtime_error(fmt::format("{}: cannot write this file", *dump_path_));
+    ::close(descriptor);
+    std::remove(probe.c_str());
+  }
+  events_.write("T,K,N1,N2\n");
+  if (csv_) csv_.write(csv_header() + "\n");
 }
 
 void RunOutputs::record(const Step& step) {
-  if (events_) {
+  if (events_ && !step.collisions.empty()) {
+    // The step's lines formatted into one buffer, written at once.
+    fmt::memory_buffer lines;
     for (const Collision& c : step.collisions) {
-      fmt::print(events_.get(), "{:.17g},{},{},{}\n", c.time, static_cast<int>(c.kind),
-                 c.first, c.second);
+      fmt::format_to(std::back_inserter(lines), "{:.17g},{},{},{}\n", c.time,
+                     static_cast<int>(c.kind), c.first, c.second);
     }
+    events_.write({lines.data(), lines.size()});
   }
   if (bell_ && !step.collisions.empty()) ring_bell();
 }
 
 void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic) {
-  if (csv_) fmt::print(csv_.get(), "{}\n", csv_row(figures, kinetic));
+  csv_.write(csv_row(figures, kinetic) + "\n");
 }
 
-void RunOutputs::finish(const Gas& gas) const {
-  if (!dump_path_) return;
-  const OutputFile dump(dump_path_);
-  fmt::print(dump.get(), "{}", scene_text(gas));
+void RunOutputs::finish(const Gas& gas) {
+  events_.close();
+  csv_.close();
+  if (dump_path_) dump_failure_ = write_whole(*dump_path_, scene_text(gas));
+}
+
+std::optional<std::string> RunOutputs::failure() const {
+  if (events_.failure()) return events_.failure();
+  if (csv_.failure()) return csv_.failure();
+  return dump_failure_;
+}
+
+std::vector<std::string> RunOutputs::written() const {
+  std::vector<std::string> files;
+  for (const auto* path : {&events_path_, &csv_path_, &dump_path_})
+    if (*path) files.push_back(**path);
+  return files;
 }
 
 void RunOutputs::ring_bell() {

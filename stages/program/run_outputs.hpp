@@ -13,6 +13,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "beyond/kinetic_screen.hpp"
 #include "program/options.hpp"
@@ -32,17 +34,35 @@ bool bell_may_ring(std::chrono::steady_clock::time_point last,
                    std::chrono::steady_clock::time_point now);
 
 // A file to write, closed when the object dies; none if no path was given.
+// It is written in whole lines, and a line that cannot be written (a full
+// disk, say) is remembered as a failure: nothing more is written to it, and
+// the run ends with a message naming the file.
 class OutputFile {
  public:
   // Opens `path` for writing, if there is one. Throws std::runtime_error if
   // the file cannot be written.
   explicit OutputFile(const std::optional<std::string>& path);
   explicit operator bool() const { return file_ != nullptr; }
-  std::FILE* get() const { return file_.get(); }
+
+  // Writes `text`, whole lines.
+  void write(std::string_view text);
+  // Sends what is buffered to the file and closes it.
+  void close();
+  // "FILE: what went wrong", once a write or the close has failed.
+  const std::optional<std::string>& failure() const { return failure_; }
 
  private:
+  void fail();  // remembers errno's reason
+
+  std::string path_;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_{nullptr, std::fclose};
+  std::optional<std::string> failure_;
 };
+
+// Writes `text` to `path` whole or not at all: into a new file beside it,
+// which is then renamed over `path`, so that a run that dies while writing
+// never leaves half a scene. Returns "FILE: what went wrong" on failure.
+std::optional<std::string> write_whole(const std::string& path, const std::string& text);
 
 // The outputs the options ask for, from the start of a run to its end.
 class RunOutputs {
@@ -62,8 +82,15 @@ class RunOutputs {
   // After a display step: the figures to --csv, one row.
   void write_csv(const Figures& figures, const KineticFigures& kinetic);
 
-  // At the end of the run: --dump writes the gas as a scene file.
-  void finish(const Gas& gas) const;
+  // At the end of the run, however it ends: --events and --csv closed on a
+  // whole line, and --dump written whole, the gas at its time T (every
+  // collision up to T is in --events).
+  void finish(const Gas& gas);
+
+  // The first output that could not be written, "FILE: why", if any.
+  std::optional<std::string> failure() const;
+  // The files written, for the message of an interrupted run.
+  std::vector<std::string> written() const;
 
  private:
   // --bell: rings now, if bell_may_ring.
@@ -71,7 +98,9 @@ class RunOutputs {
 
   OutputFile events_;                                  // --events
   OutputFile csv_;                                     // --csv
+  std::optional<std::string> events_path_, csv_path_;  // their names
   std::optional<std::string> dump_path_;               // --dump
+  std::optional<std::string> dump_failure_;            // why --dump was not written
   bool bell_ = false;                                  // --bell
   Display& display_;                                   // where the bell rings
   std::chrono::steady_clock::time_point last_bell_{};  // when it last rang

@@ -11,7 +11,7 @@
 namespace gas {
 namespace {
 
-volatile std::sig_atomic_t interrupt_arrived = 0;
+volatile std::sig_atomic_t interrupt_arrived = 0;  // the signal's number, or 0
 termios saved_settings;
 volatile std::sig_atomic_t settings_saved = 0;
 
@@ -21,8 +21,8 @@ void restore_terminal() {
   if (settings_saved) tcsetattr(STDIN_FILENO, TCSANOW, &saved_settings);
 }
 
-extern "C" void on_interrupt(int) {
-  interrupt_arrived = 1;
+extern "C" void on_interrupt(int signal) {
+  if (interrupt_arrived == 0) interrupt_arrived = signal;  // the first one counts
 }
 
 }  // namespace
@@ -45,12 +45,27 @@ void install_interrupt_flag() {
   action.sa_handler = on_interrupt;
   sigemptyset(&action.sa_mask);
   action.sa_flags = 0;  // no SA_RESTART: a waiting poll() returns at once
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal, &action, nullptr);
 }
 
 bool interrupted() {
   return interrupt_arrived != 0;
+}
+
+int interrupting_signal() {
+  return interrupt_arrived;
+}
+
+const char* signal_name(int signal) {
+  switch (signal) {
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGHUP:
+      return "SIGHUP";
+  }
+  return "a signal";
 }
 
 RawKeys::RawKeys() {

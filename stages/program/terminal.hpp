@@ -37,8 +37,16 @@ class RawKeys {
   bool active_ = false;
 };
 
-// True once Ctrl-C (SIGINT) or SIGTERM has arrived, after install_interrupt_flag.
-bool interrupted();
+// The ways a run is asked to end from outside: Ctrl-C (SIGINT), `kill` and
+// job schedulers (SIGTERM), a closed terminal (SIGHUP). After
+// install_interrupt_flag, such a signal only raises a flag: the loop sees it
+// between two steps and ends the run as E would, so every file it writes is
+// left whole and the terminal is restored.
 void install_interrupt_flag();
+bool interrupted();
+// The signal that arrived (SIGINT, SIGTERM or SIGHUP), or 0.
+int interrupting_signal();
+// "SIGINT", "SIGTERM", "SIGHUP".
+const char* signal_name(int signal);
 
 }  // namespace gas
