@@ -25,6 +25,12 @@ extern "C" void on_interrupt(int) {
   interrupt_arrived = 1;
 }
 
+volatile std::sig_atomic_t resize_arrived = 0;
+
+extern "C" void on_resize(int) {
+  resize_arrived = 1;
+}
+
 }  // namespace
 
 bool is_terminal(int file_descriptor) {
@@ -51,6 +57,20 @@ void install_interrupt_flag() {
 
 bool interrupted() {
   return interrupt_arrived != 0;
+}
+
+void install_resize_flag() {
+  struct sigaction action {};
+  action.sa_handler = on_resize;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = 0;  // no SA_RESTART: a waiting poll() returns, and the loop redraws
+  sigaction(SIGWINCH, &action, nullptr);
+}
+
+bool take_resize() {
+  if (resize_arrived == 0) return false;
+  resize_arrived = 0;
+  return true;
 }
 
 RawKeys::RawKeys() {

@@ -41,4 +41,9 @@ class RawKeys {
 bool interrupted();
 void install_interrupt_flag();
 
+// The window's size changed (SIGWINCH): after install_resize_flag, true once
+// for every change since the last call (several changes count as one).
+void install_resize_flag();
+bool take_resize();
+
 }  // namespace gas
