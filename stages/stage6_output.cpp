@@ -117,6 +117,12 @@ std::string status_line(const Figures& f, ScreenMode mode, bool stopped) {
                      stopped ? " [stopped]" : "");
 }
 
+void Display::fit_window(int columns, int rows) {
+  window_columns_ = std::max(columns, 0);
+  window_rows_ = std::max(rows, 0);
+  invalidate();
+}
+
 // Send only what changed: for each line, each run of characters that differs
 // from what the terminal already shows, after moving the cursor there.
 void Display::show(const TextScreen& screen, const std::string& status,
@@ -132,11 +138,23 @@ void Display::show(const TextScreen& screen, const std::string& status,
     return;
   }
 
+  // Nothing outside the window: lines cut at its right edge, and none below
+  // its last row but one (the cursor's).
+  if (window_rows_ > 0 && frame.size() + 1 > static_cast<std::size_t>(window_rows_))
+    frame.resize(static_cast<std::size_t>(std::max(window_rows_ - 1, 1)));
+  if (window_columns_ > 0) {
+    for (std::string& line : frame) {
+      if (line.size() > static_cast<std::size_t>(window_columns_))
+        line.resize(static_cast<std::size_t>(window_columns_));
+    }
+  }
+
   std::string out;
   if (shown_.size() != frame.size()) {
     out += "\x1b[?25l\x1b[H\x1b[2J";  // hide the cursor, clear the screen
     shown_.assign(frame.size(), std::string());
   }
+  notice_.clear();
   auto coloured = [&](char c) {
     if (colour_ && (c == tone.ball_glyph || c == tone.trail_glyph)) {
       return fmt::format("\x1b[1;{}m{}\x1b[0m", tone.ansi_colour, c);
@@ -171,6 +189,24 @@ void Display::show(const TextScreen& screen, const std::string& status,
   std::fflush(out_);
 }
 
+void Display::notice(const std::string& line) {
+  if (!terminal_) {
+    fmt::print(out_, "{}\n", line);
+    std::fflush(out_);
+    return;
+  }
+  std::string text = line;
+  if (window_columns_ > 0 && text.size() > static_cast<std::size_t>(window_columns_))
+    text.resize(static_cast<std::size_t>(window_columns_));
+  if (!notice_.empty() && notice_ == text) return;  // already on the terminal
+  // Hide the cursor, clear the screen, the line at the top; the next frame is
+  // drawn whole.
+  fmt::print(out_, "\x1b[?25l\x1b[H\x1b[2J{}", text);
+  std::fflush(out_);
+  shown_.clear();
+  notice_ = text;
+}
+
 void Display::bell() {
   std::fputc('\a', out_);
   std::fflush(out_);
@@ -178,7 +214,10 @@ void Display::bell() {
 
 void Display::finish() {
   if (terminal_) {
-    fmt::print(out_, "\x1b[{};1H\x1b[?25h\n", shown_.size() + 1);
+    // Below the frame (or the notice), but not below the window.
+    std::size_t row = std::max<std::size_t>(shown_.size(), notice_.empty() ? 0 : 1) + 1;
+    if (window_rows_ > 0) row = std::min(row, static_cast<std::size_t>(window_rows_));
+    fmt::print(out_, "\x1b[{};1H\x1b[?25h\n", row);
     std::fflush(out_);
   }
 }

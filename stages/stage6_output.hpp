@@ -81,14 +81,25 @@ std::string status_line(const Figures& figures, ScreenMode mode, bool stopped);
 
 // Sends frames to standard output. On a terminal: draws in place with ANSI
 // escapes, sending only the characters that changed (with colour when
-// `colour`); elsewhere: every frame in full, headed by its status line.
+// `colour`), and nothing outside the window; elsewhere: every frame in full,
+// headed by its status line.
 class Display {
  public:
   Display(std::FILE* out, bool terminal, bool colour)
       : out_(out), terminal_(terminal), colour_(colour) {}
   void show(const TextScreen& screen, const std::string& status, const Tone& tone);
   // Forget what the terminal shows, so that the next frame is drawn whole.
-  void invalidate() { shown_.clear(); }
+  void invalidate() {
+    shown_.clear();
+    notice_.clear();
+  }
+  // The terminal's window is `columns` x `rows` characters: from now on every
+  // line is cut at its right edge, and lines below it are left out (the
+  // frame's own size does not change). The frame is drawn whole next time.
+  void fit_window(int columns, int rows);
+  // On a terminal: a clear screen with `line` alone at the top, cut to the
+  // window (sent once, until a frame or invalidate()); elsewhere: the line.
+  void notice(const std::string& line);
   void bell();
   // On a terminal: moves the cursor below the last frame and shows it again.
   void finish();
@@ -97,7 +108,10 @@ class Display {
   std::FILE* out_;
   bool terminal_;
   bool colour_;
+  int window_columns_ = 0;          // the window's width; 0: no limit
+  int window_rows_ = 0;             // the window's height; 0: no limit
   std::vector<std::string> shown_;  // what the terminal shows now, status line first
+  std::string notice_;              // the notice the terminal shows now, if any
 };
 
 }  // namespace gas

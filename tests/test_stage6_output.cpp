@@ -12,7 +12,8 @@
 // - status_line: its format.
 // - Display: plain frames (status line + screen) when not a terminal; on a
 //   terminal, only what changed (checked by replaying the output on a small
-//   model of an ANSI terminal).
+//   model of an ANSI terminal); in a smaller window, nothing outside it, and
+//   notice()'s one line.
 // - Golden frames of the default scene at a few model times.
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -419,6 +420,41 @@ TEST_SUITE("stage6") {
       CHECK(terminal.printed == 3 + 30 * 10);
       CHECK(terminal.shows("T=0", screen));
     }
+    std::fclose(file);
+  }
+
+  TEST_CASE(
+      "Display in a window smaller than the frame: cut at its edges, and notice()") {
+    std::FILE* file = std::tmpfile();
+    REQUIRE(file != nullptr);
+    TextScreen screen = gas::prepare_character_screen(30, 10);
+    gas::Display display(file, true, false);
+    display.fit_window(20, 8);  // 20 columns; 7 rows of frame, the cursor's below
+    const std::string status = "T=0 a status line longer than the window";
+    display.show(screen, status, gas::tones[0]);
+    Terminal terminal;
+    terminal.replay(contents(file));
+    // The frame's top left, cut: the status line and six rows of the screen.
+    CHECK(terminal.lines[0].substr(0, 21) == status.substr(0, 20) + " ");
+    for (std::size_t r = 1; r < 7; ++r)
+      CHECK(terminal.lines[r].substr(0, 21) == screen.lines[r - 1].substr(0, 20) + " ");
+    for (std::size_t r = 7; r < terminal.lines.size(); ++r)
+      CHECK(terminal.lines[r] == std::string(terminal.lines[r].size(), ' '));
+    CHECK(terminal.printed == 20 * 7);
+
+    // notice(): the screen cleared and one line, cut to the window; sent once.
+    const std::size_t before = contents(file).size();
+    std::fseek(file, 0, SEEK_END);
+    display.notice("window too small: at least 8 x 7");
+    terminal.replay(contents(file).substr(before));
+    CHECK(terminal.lines[0].substr(0, 21) == "window too small: at ");
+    for (std::size_t r = 1; r < terminal.lines.size(); ++r)
+      CHECK(terminal.lines[r] == std::string(terminal.lines[r].size(), ' '));
+    std::fseek(file, 0, SEEK_END);
+    const long after = std::ftell(file);
+    display.notice("window too small: at least 8 x 7");
+    std::fseek(file, 0, SEEK_END);
+    CHECK(std::ftell(file) == after);
     std::fclose(file);
   }
 

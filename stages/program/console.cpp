@@ -29,17 +29,24 @@ constexpr long long default_plain_frames = 100;
 struct GridSize {
   int columns = 0;
   int rows = 0;
+  bool too_small = false;  // the window has no room for it: the smallest grid instead
 };
 
 // The grid for a run: --cols and --rows, else the terminal's size (else 80 x
-// 24), less two rows: the status line, and the cursor below the screen.
-GridSize grid_size(const Options& options) {
+// 24), less two rows: the status line, and the cursor below the screen. A
+// window too small for the smallest grid is a usage error, unless the frames
+// are drawn `in_place` on it: then the window may yet grow (too_small).
+GridSize grid_size(const Options& options, bool in_place) {
   const TerminalSize size = terminal_size().value_or(TerminalSize{});
-  const GridSize grid{options.columns.value_or(size.columns),
-                      options.rows.value_or(size.rows) - 2};
+  GridSize grid{options.columns.value_or(size.columns),
+                options.rows.value_or(size.rows) - 2};
   if (grid.columns < smallest_columns || grid.rows < smallest_rows) {
-    throw UsageError(fmt::format("the screen is too small: at least {} x {} characters",
-                                 smallest_columns, smallest_rows + 2));
+    if (!in_place) {
+      throw UsageError(fmt::format("the screen is too small: at least {} x {} characters",
+                                   smallest_columns, smallest_rows + 2));
+    }
+    grid = {std::max(grid.columns, smallest_columns), std::max(grid.rows, smallest_rows),
+            true};
   }
   return grid;
 }
@@ -122,11 +129,17 @@ class ConsoleRun {
         keyboard_(terminal_ && is_terminal(0) && !options.keys && !options.step),
         control_(start_control_for(std::move(gas), options.strategy)),
         display_(stdout, terminal_, terminal_ && std::getenv("NO_COLOR") == nullptr),
-        grid_(grid_size(options)),
+        grid_(grid_size(options, terminal_)),
         frame_limit_(frame_limit(options, terminal_)),
         measurements_(control_, grid_.columns),
         outputs_(options, display_),
-        screen_(prepare()) {}
+        screen_(prepare()) {
+    // Drawn in place: the frame fits the window, and fits it again when it
+    // changes size (resize()).
+    if (const auto size = terminal_size(); terminal_ && size)
+      display_.fit_window(size->columns, size->rows);
+    if (terminal_) install_resize_flag();
+  }
 
   // The article's stage 7: the keys of the tick; then, unless stopped, stages
   // 4 and 5 take one display step (back to stage 4 at every collision); then
@@ -142,6 +155,7 @@ class ConsoleRun {
       if (interrupted() || outputs_.failure()) break;
       if (frame_limit_ && frames_done >= *frame_limit_) break;
       if (options_.until && control_.gas.time >= *options_.until) break;
+      if (terminal_ && take_resize()) resize();  // stage 3 again, at the new size
 
       // Stage 7: the keys of this tick; E ends the run.
       const std::string pressed = keys.take(control_.stopped);
@@ -209,6 +223,17 @@ class ConsoleRun {
     return true;
   }
 
+  // The window changed size: back to stage 3 at the new size, as the key 0
+  // does, and the frame drawn whole at once, cut to the window (--cols and
+  // --rows, if given, keep their size).
+  void resize() {
+    grid_ = grid_size(options_, true);
+    if (const auto size = terminal_size()) display_.fit_window(size->columns, size->rows);
+    screen_ = prepare();
+    display_.invalidate();
+    show(figures_of(control_));
+  }
+
   // Stage 3: the table's screen, or for the figures a plain character screen.
   TextScreen prepare() const {
     return options_.mode == ScreenMode::stats
@@ -220,6 +245,11 @@ class ConsoleRun {
   // --trace it says when the step ended on a collision (T = TC): the
   // article's picture freezes there while stage 4 computes the next one.
   void show(const Figures& figures, bool at_collision = false) {
+    if (grid_.too_small) {  // until the window grows: one line, no frame
+      display_.notice(fmt::format("window too small: at least {} x {}", smallest_columns,
+                                  smallest_rows + 2));
+      return;
+    }
     const Tone& tone = tones[control_.tone];
     if (options_.trace) {
       fmt::print("stage 6  output: the {} screen{}\n", mode_name(options_.mode),

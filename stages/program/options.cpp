@@ -242,6 +242,9 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|s
 
 keys (in a terminal, without Enter): S stop, R run, B reverse all velocities,
   > double T0, < halve T0, 0 redraw the screen, E end.
+In a terminal, a resized window gets the screen prepared again at its size
+(--cols and --rows keep theirs, cut to the window); a window too small for
+the table says so until it grows.
 When the output is not a terminal, every frame is printed whole, headed by a
 status line; with no --frames or --until the run stops after 100 frames (or
 as many as --keys has keys, if more).

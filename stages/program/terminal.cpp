@@ -25,6 +25,12 @@ extern "C" void on_interrupt(int signal) {
   if (interrupt_arrived == 0) interrupt_arrived = signal;  // the first one counts
 }
 
+volatile std::sig_atomic_t resize_arrived = 0;
+
+extern "C" void on_resize(int) {
+  resize_arrived = 1;
+}
+
 }  // namespace
 
 bool is_terminal(int file_descriptor) {
@@ -66,6 +72,23 @@ const char* signal_name(int signal) {
       return "SIGHUP";
   }
   return "a signal";
+}
+
+void install_resize_flag() {
+  struct sigaction action {};
+  action.sa_handler = on_resize;
+  sigemptyset(&action.sa_mask);
+  // SA_RESTART: a read that waits for --step's Enter goes on waiting (a
+  // resize must not end the run); poll() returns early all the same (Linux
+  // never restarts it), so the keyboard's loop redraws at once.
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGWINCH, &action, nullptr);
+}
+
+bool take_resize() {
+  if (resize_arrived == 0) return false;
+  resize_arrived = 0;
+  return true;
 }
 
 RawKeys::RawKeys() {

@@ -49,4 +49,9 @@ int interrupting_signal();
 // "SIGINT", "SIGTERM", "SIGHUP".
 const char* signal_name(int signal);
 
+// The window's size changed (SIGWINCH): after install_resize_flag, true once
+// for every change since the last call (several changes count as one).
+void install_resize_flag();
+bool take_resize();
+
 }  // namespace gas

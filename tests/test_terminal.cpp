@@ -1,0 +1,331 @@
+// The program `gas` on a terminal whose window changes size.
+//
+// Each test starts build/gas on a pseudo-terminal of a given size (forkpty),
+// lets it draw, changes the window's size with TIOCSWINSZ (the kernel sends
+// the program SIGWINCH), and replays what the program wrote since its last
+// clear-screen on a small model of a terminal of the new size:
+// - a resized window: the screen is laid out afresh at the new size (stage 3
+//   again), cleared and drawn whole, with nothing written outside the window;
+// - a window too small for the smallest table: one line says so, and the
+//   frame comes back when the window grows; a too-small window at the start
+//   gives the same line, not an error (but --trace, which prints frames
+//   whole, still refuses it);
+// - --cols and --rows keep their size in a smaller window, and the frame is
+//   cut at the window's edges;
+// - E still ends the run with status 0, and the cursor is shown again.
+// Every wait is bounded: a program that hangs is killed and the test fails.
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <signal.h>
+#include <sys/ioctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// build/gas running on a pseudo-terminal; killed if still running at the end.
+class PtyRun {
+ public:
+  PtyRun(int columns, int rows, const std::vector<std::string>& arguments) {
+    winsize size{};
+    size.ws_col = static_cast<unsigned short>(columns);
+    size.ws_row = static_cast<unsigned short>(rows);
+    child_ = forkpty(&master_, nullptr, nullptr, &size);
+    REQUIRE_MESSAGE(child_ >= 0, "forkpty failed");
+    if (child_ == 0) {
+      std::vector<std::string> words{GAS_PROGRAM};
+      words.insert(words.end(), arguments.begin(), arguments.end());
+      std::vector<char*> argv;
+      for (std::string& word : words) argv.push_back(word.data());
+      argv.push_back(nullptr);
+      if (chdir(GAS_SOURCE_DIR) != 0) _exit(126);
+      execv(GAS_PROGRAM, argv.data());
+      _exit(127);
+    }
+  }
+  ~PtyRun() {
+    if (child_ > 0 && !exited_) {
+      kill(child_, SIGKILL);
+      waitpid(child_, nullptr, 0);
+    }
+    if (master_ >= 0) close(master_);
+  }
+  PtyRun(const PtyRun&) = delete;
+  PtyRun& operator=(const PtyRun&) = delete;
+
+  // Everything the program has written so far.
+  const std::string& output() const { return output_; }
+
+  // Reads what the program writes for `ms` milliseconds.
+  void read_for(int ms) {
+    read_until([] { return false; }, ms);
+  }
+
+  // Reads until `done` holds or `ms` milliseconds have passed; true if done.
+  bool read_until(const std::function<bool()>& done, int ms) {
+    const auto deadline = Clock::now() + std::chrono::milliseconds(ms);
+    while (!done()) {
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now())
+              .count();
+      if (left <= 0) return false;
+      pollfd input{master_, POLLIN, 0};
+      if (poll(&input, 1, static_cast<int>(left)) <= 0) continue;
+      char buffer[4096];
+      const ssize_t count = read(master_, buffer, sizeof buffer);
+      if (count <= 0) return done();  // the program has gone (EIO)
+      output_.append(buffer, static_cast<std::size_t>(count));
+    }
+    return true;
+  }
+
+  // Changes the window's size; the kernel sends the program SIGWINCH.
+  void resize(int columns, int rows) {
+    winsize size{};
+    size.ws_col = static_cast<unsigned short>(columns);
+    size.ws_row = static_cast<unsigned short>(rows);
+    REQUIRE(ioctl(master_, TIOCSWINSZ, &size) == 0);
+  }
+
+  // Types `keys` on the keyboard.
+  void type(const std::string& keys) {
+    REQUIRE(write(master_, keys.data(), keys.size()) ==
+            static_cast<ssize_t>(keys.size()));
+  }
+
+  // The exit status, reading the output meanwhile; -1 if the program is still
+  // running after `ms` milliseconds (it is killed) or did not exit normally.
+  int wait_exit(int ms) {
+    const auto deadline = Clock::now() + std::chrono::milliseconds(ms);
+    int raw = 0;
+    while (waitpid(child_, &raw, WNOHANG) == 0) {
+      if (Clock::now() >= deadline) {
+        kill(child_, SIGKILL);
+        waitpid(child_, nullptr, 0);
+        exited_ = true;
+        return -1;
+      }
+      read_for(20);
+    }
+    exited_ = true;
+    read_for(50);  // what is left in the pty
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  }
+
+ private:
+  int master_ = -1;
+  pid_t child_ = -1;
+  bool exited_ = false;
+  std::string output_;
+};
+
+// A terminal of `columns` x `rows` that understands what the program sends
+// (cursor moves, clear screen, colours, showing and hiding the cursor), and
+// notes every character written outside its window.
+struct Terminal {
+  Terminal(int columns_, int rows_)
+      : columns(columns_),
+        rows(rows_),
+        lines(static_cast<std::size_t>(rows_),
+              std::string(static_cast<std::size_t>(columns_), ' ')) {}
+
+  void play(const std::string& text) {
+    for (std::size_t k = 0; k < text.size(); ++k) {
+      const char c = text[k];
+      if (c == '\x1b' && k + 1 < text.size() && text[k + 1] == '[') {
+        std::size_t end = k + 2;
+        while (end < text.size() && !(text[end] >= '@' && text[end] <= '~')) ++end;
+        if (end == text.size()) break;
+        escape(text.substr(k + 2, end - k - 2), text[end]);
+        k = end;
+      } else if (c == '\n') {
+        ++row;
+        column = 1;
+      } else if (c == '\r') {
+        column = 1;
+      } else if (c == '\a') {
+      } else {
+        if (row < 1 || row > rows || column < 1 || column > columns) {
+          ++outside;
+        } else {
+          lines[static_cast<std::size_t>(row - 1)][static_cast<std::size_t>(column - 1)] =
+              c;
+        }
+        ++column;
+      }
+    }
+  }
+
+  void escape(const std::string& parameters, char final) {
+    if (final == 'H') {  // cursor to row;column
+      row = 1;
+      column = 1;
+      if (!parameters.empty()) {
+        const std::size_t semicolon = parameters.find(';');
+        row = std::stoi(parameters.substr(0, semicolon));
+        if (semicolon != std::string::npos)
+          column = std::stoi(parameters.substr(semicolon + 1));
+      }
+      if (row > rows || column > columns) ++moves_outside;
+    } else if (final == 'J' && parameters == "2") {
+      for (std::string& line : lines) line.assign(static_cast<std::size_t>(columns), ' ');
+    }  // colours ('m') and the cursor shown or hidden ('h', 'l') change no cell
+  }
+
+  // Row `n` (from 1) without its trailing blanks.
+  std::string line(int n) const {
+    std::string text = lines[static_cast<std::size_t>(n - 1)];
+    text.erase(text.find_last_not_of(' ') + 1);
+    return text;
+  }
+
+  int columns;
+  int rows;
+  std::vector<std::string> lines;
+  int row = 1;
+  int column = 1;
+  int outside = 0;        // characters written outside the window
+  int moves_outside = 0;  // cursor moves outside the window
+};
+
+const std::string clear_screen = "\x1b[2J";
+const std::string show_cursor = "\x1b[?25h";
+const std::string too_small = "window too small: at least 8 x 7";
+
+// What the program wrote after `from`, from its last clear-screen on, played
+// on a terminal of `columns` x `rows`; empty if there is no clear-screen.
+std::optional<Terminal> last_screen(const std::string& output, std::size_t from,
+                                    int columns, int rows) {
+  const std::size_t start = output.rfind(clear_screen);
+  if (start == std::string::npos || start < from) return std::nullopt;
+  Terminal terminal(columns, rows);
+  terminal.play(output.substr(start));
+  return terminal;
+}
+
+// Does `terminal` show a status line over a whole table: a top border
+// "+---+", rows "|...|" of the same width, and a bottom border?
+bool shows_whole_frame(const Terminal& terminal) {
+  if (terminal.line(1).rfind("T=", 0) != 0) return false;
+  const std::string border = terminal.line(2);
+  if (border.size() < 3 || border.front() != '+' || border.back() != '+' ||
+      border.find_first_not_of('-', 1) != border.size() - 1) {
+    return false;
+  }
+  for (int n = 3; n <= terminal.rows; ++n) {
+    const std::string line = terminal.line(n);
+    if (line == border) return n >= 4;
+    if (line.size() != border.size() || line.front() != '|' || line.back() != '|')
+      return false;
+  }
+  return false;  // no bottom border
+}
+
+}  // namespace
+
+TEST_SUITE("console") {
+  TEST_CASE(
+      "a resized terminal: stage 3 again at the new size, nothing outside the window") {
+    PtyRun run(80, 24, {});
+    run.read_for(600);
+    const auto before = last_screen(run.output(), 0, 80, 24);
+    REQUIRE(before);
+    CHECK(shows_whole_frame(*before));
+    CHECK(before->line(2).size() > 50);  // the 80-column table, wider than 50
+
+    const std::size_t mark = run.output().size();
+    run.resize(50, 15);
+    run.read_for(800);
+    const auto after = last_screen(run.output(), mark, 50, 15);
+    REQUIRE_MESSAGE(after, "no clear-screen after the resize");
+    CHECK(after->outside == 0);
+    CHECK(after->moves_outside == 0);
+    CHECK(shows_whole_frame(*after));
+    CHECK(after->line(2).size() <= 50);
+    CHECK(after->line(1).size() <= 50);  // the status line cut to the window
+
+    run.type("E");
+    CHECK(run.wait_exit(5000) == 0);
+    CHECK(run.output().find(show_cursor, mark) != std::string::npos);
+  }
+
+  TEST_CASE(
+      "a window too small for the table says so on one line, then draws when it grows") {
+    PtyRun run(80, 24, {});
+    run.read_for(400);
+    std::size_t mark = run.output().size();
+    run.resize(40, 6);
+    const auto said = [&] {
+      return run.output().find(too_small, mark) != std::string::npos;
+    };
+    REQUIRE_MESSAGE(run.read_until(said, 3000), "no '" << too_small << "'");
+    run.read_for(300);
+    const auto small = last_screen(run.output(), mark, 40, 6);
+    REQUIRE(small);
+    CHECK(small->outside == 0);
+    CHECK(small->line(1) == too_small);
+    for (int n = 2; n <= 6; ++n) CHECK(small->line(n).empty());
+
+    mark = run.output().size();
+    run.resize(60, 18);
+    run.read_for(800);
+    const auto grown = last_screen(run.output(), mark, 60, 18);
+    REQUIRE_MESSAGE(grown, "no clear-screen after the window grew");
+    CHECK(grown->outside == 0);
+    CHECK(shows_whole_frame(*grown));
+
+    run.type("E");
+    CHECK(run.wait_exit(5000) == 0);
+    CHECK(run.output().find(show_cursor, mark) != std::string::npos);
+  }
+
+  TEST_CASE(
+      "a window too small at the start: the line, not an error (but --trace refuses "
+      "it)") {
+    {
+      PtyRun run(40, 6, {});
+      const auto said = [&] { return run.output().find(too_small) != std::string::npos; };
+      REQUIRE_MESSAGE(run.read_until(said, 3000), "no '" << too_small << "'");
+      const std::size_t mark = run.output().size();
+      run.resize(60, 18);
+      run.read_for(800);
+      const auto grown = last_screen(run.output(), mark, 60, 18);
+      REQUIRE_MESSAGE(grown, "no clear-screen after the window grew");
+      CHECK(shows_whole_frame(*grown));
+      run.type("E");
+      CHECK(run.wait_exit(5000) == 0);
+    }
+    {
+      PtyRun run(40, 6, {"--trace", "--frames", "1"});
+      CHECK(run.wait_exit(5000) == 2);
+      CHECK(run.output().find("the screen is too small") != std::string::npos);
+    }
+  }
+
+  TEST_CASE("--cols and --rows keep their size in a smaller window, cut at its edges") {
+    PtyRun run(80, 24, {"--cols", "100", "--rows", "30"});
+    run.read_for(400);
+    const std::size_t mark = run.output().size();
+    run.resize(50, 15);
+    run.read_for(800);
+    const auto after = last_screen(run.output(), mark, 50, 15);
+    REQUIRE_MESSAGE(after, "no clear-screen after the resize");
+    CHECK(after->outside == 0);
+    CHECK(after->moves_outside == 0);
+    // The table of 70 columns, cut: a top border with no right corner.
+    CHECK(after->line(2).size() == 50);
+    CHECK(after->line(2).find_first_not_of('-', 1) == std::string::npos);
+    run.type("E");
+    CHECK(run.wait_exit(5000) == 0);
+  }
+}
