@@ -5,7 +5,8 @@
 // word into a number (read_number), a keyword line into what the file said
 // (read_line, into a SceneText); then the checks of the whole scene, each its
 // own function (check_complete, check_sizes, check_random_line, check_count,
-// check_inside_table, check_no_overlap), and the description built from it.
+// check_times, check_inside_table, check_no_overlap), and the description
+// built from it.
 #include "stage2_input.hpp"
 
 #include <fmt/format.h>
@@ -40,8 +41,10 @@ struct SceneText {
   std::string file_name;                                     // for messages
   std::optional<Given> radius, display_step, width, height;  // a, T0, A1, A2
   std::optional<Given> ball_count;                           // N
-  std::vector<Ball> balls;      // the 'ball' lines: R, row by row
-  std::vector<int> ball_lines;  // the line of each
+  std::optional<Given> start_time;  // T, the moment the scene starts (none: 0)
+  std::vector<Ball> balls;          // the 'ball' lines: R, row by row
+  std::vector<int> ball_lines;      // the line of each
+  std::vector<bool> since_given;    // whether each gave SINCE (else: since = T)
   std::optional<RandomLine> random;
   int last_line = 1;  // where something missing is reported
 };
@@ -125,7 +128,7 @@ std::string keyword_hint(std::string_view keyword) {
     return out;
   };
   std::string hint;
-  for (const char* known : {"a", "T0", "A1", "A2", "N", "ball", "random"}) {
+  for (const char* known : {"a", "T0", "A1", "A2", "N", "ball", "random", "T"}) {
     if (lower(keyword) == lower(known))
       hint = fmt::format(" (names are case-sensitive: did you mean '{}'?)", known);
   }
@@ -177,10 +180,23 @@ void read_line(std::string_view line, int line_number, SceneText& scene) {
     single(scene.height, "the table height");
   } else if (keyword == "N") {
     single(scene.ball_count, "the number of balls");
+  } else if (keyword == "T") {
+    single(scene.start_time, "the model time the scene starts at");
   } else if (keyword == "ball") {
-    const std::vector<double> v = numbers(4, "x y vx vy");
-    scene.balls.push_back(Ball{v[0], v[1], v[2], v[3], 0.0});
+    // x y vx vy, or (as --dump writes) x y vx vy SINCE: the row as it was
+    // written at the moment SINCE. Without SINCE the row is the centre at the
+    // scene's T, filled in once the whole file is read (checked()).
+    if (count > 5) {
+      fail(scene.file_name, line_number,
+           fmt::format("'ball' takes 4 numbers (x y vx vy) or 5 (x y vx vy SINCE), "
+                       "found {}",
+                       count));
+    }
+    const bool since_given = count == 5;
+    const std::vector<double> v = numbers(since_given ? 5 : 4, "x y vx vy");
+    scene.balls.push_back(Ball{v[0], v[1], v[2], v[3], since_given ? v[4] : 0.0});
     scene.ball_lines.push_back(line_number);
+    scene.since_given.push_back(since_given);
   } else if (keyword == "random") {
     const std::vector<double> v = numbers(3, "COUNT SEED SPEED");
     if (scene.random) {
@@ -299,44 +315,94 @@ void check_count(const SceneText& scene) {
 }
 // [/anchor: check-count]
 
-// Check that every centre is within its limits a <= x <= A1 - a,
+// The scene's T: its 'T' line, or 0.
+double start_time(const SceneText& scene) {
+  return scene.start_time ? scene.start_time->value : 0.0;
+}
+
+// Check the times of a scene that carries them (a --dump): T is not negative
+// (model time starts at 0 and only goes on), and no row was written after T.
+// [anchor: check-times]
+void check_times(const SceneText& scene) {
+  const double now = start_time(scene);
+  if (now < 0) {
+    fail(scene.file_name, scene.start_time->line,
+         fmt::format("T = {} must not be negative", now));
+  }
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    if (scene.since_given[i] && scene.balls[i].since > now) {
+      fail(scene.file_name, scene.ball_lines[i],
+           fmt::format("ball {}: its row is written at SINCE = {}, after the scene's "
+                       "T = {} (a row cannot be written in the future)",
+                       i + 1, scene.balls[i].since, now));
+    }
+  }
+}
+// [/anchor: check-times]
+
+// Where each ball's centre is at the scene's T, the moment the run starts
+// from: the checks below look at these, not at the rows. A 'ball' line
+// without SINCE gives its centre at T itself (taken as written, not
+// recomputed); one with SINCE gives it at SINCE, and it has flown since.
+// [anchor: centres-at-start]
+std::vector<Point> centres_at_start(const SceneText& scene) {
+  std::vector<Point> centres;
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    const Ball& row = scene.balls[i];
+    centres.push_back(scene.since_given[i] ? centre_at(row, start_time(scene))
+                                           : Point{row.x, row.y});
+  }
+  return centres;
+}
+// [/anchor: centres-at-start]
+
+// In a message about a ball given with SINCE before T: that the centre meant
+// is the one at T, not the line's x and y.
+std::string when(const SceneText& scene, std::size_t i) {
+  if (!scene.since_given[i] || scene.balls[i].since == start_time(scene)) return "";
+  return fmt::format(" at T = {}", start_time(scene));
+}
+
+// Check that every centre at T is within its limits a <= x <= A1 - a,
 // a <= y <= A2 - a (up to the contact tolerance).
 // [anchor: check-inside-table]
-void check_inside_table(const SceneText& scene) {
+void check_inside_table(const SceneText& scene, const std::vector<Point>& centres) {
   const double a = scene.radius->value;
   const double slack = contact_tolerance * (2 * a);
   for (std::size_t i = 0; i < scene.balls.size(); ++i) {
     auto within = [&](double value, double side, char axis) {
       if (value < a - slack || value > side - a + slack) {
         fail(scene.file_name, scene.ball_lines[i],
-             fmt::format("ball {}: its centre {} = {} is outside the table "
+             fmt::format("ball {}: its centre {} = {}{} is outside the table "
                          "(a <= {} <= {} - a, i.e. {} .. {})",
-                         i + 1, axis, value, axis, axis == 'x' ? "A1" : "A2", a,
-                         side - a));
+                         i + 1, axis, value, when(scene, i), axis,
+                         axis == 'x' ? "A1" : "A2", a, side - a));
       }
     };
-    within(scene.balls[i].x, scene.width->value, 'x');
-    within(scene.balls[i].y, scene.height->value, 'y');
+    within(centres[i].x, scene.width->value, 'x');
+    within(centres[i].y, scene.height->value, 'y');
   }
 }
 // [/anchor: check-inside-table]
 
-// Check that no two balls overlap: no two centres closer than 2a (touching is
-// allowed, up to the contact tolerance).
+// Check that no two balls overlap at T: no two centres closer than 2a
+// (touching is allowed, up to the contact tolerance).
 // [anchor: check-no-overlap]
-void check_no_overlap(const SceneText& scene) {
+void check_no_overlap(const SceneText& scene, const std::vector<Point>& centres) {
   const double diameter = 2 * scene.radius->value;
   const double closest = diameter - contact_tolerance * diameter;
   for (std::size_t j = 1; j < scene.balls.size(); ++j) {
     for (std::size_t i = 0; i < j; ++i) {
-      const double dx = scene.balls[j].x - scene.balls[i].x;
-      const double dy = scene.balls[j].y - scene.balls[i].y;
+      const double dx = centres[j].x - centres[i].x;
+      const double dy = centres[j].y - centres[i].y;
       if (dx * dx + dy * dy < closest * closest) {
         const double apart = std::hypot(dx, dy);
         fail(scene.file_name, scene.ball_lines[j],
-             fmt::format("ball {} overlaps ball {} (line {}): centres {:.9g} apart, "
+             fmt::format("ball {} overlaps ball {} (line {}): centres {:.9g} apart{}, "
                          "less than 2a = {}",
-                         j + 1, i + 1, scene.ball_lines[i], apart, diameter));
+                         j + 1, i + 1, scene.ball_lines[i], apart,
+                         when(scene, j).empty() ? when(scene, i) : when(scene, j),
+                         diameter));
       }
     }
   }
@@ -349,8 +415,10 @@ SceneDescription checked(const SceneText& scene) {
   check_sizes(scene);
   std::optional<RandomBalls> random = check_random_line(scene);
   check_count(scene);
-  check_inside_table(scene);
-  check_no_overlap(scene);
+  check_times(scene);
+  const std::vector<Point> centres = centres_at_start(scene);
+  check_inside_table(scene, centres);
+  check_no_overlap(scene, centres);
 
   SceneDescription description;
   description.file_name = scene.file_name;
@@ -358,7 +426,11 @@ SceneDescription checked(const SceneText& scene) {
   description.gas.width = scene.width->value;
   description.gas.height = scene.height->value;
   description.gas.display_step = scene.display_step->value;
+  description.gas.time = start_time(scene);
   description.gas.balls = scene.balls;
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    if (!scene.since_given[i]) description.gas.balls[i].since = description.gas.time;
+  }
   description.random = random;
   return description;
 }
@@ -423,18 +495,24 @@ Gas build_gas(const SceneDescription& scene) {
 }
 
 #ifndef GAS_STUDENT_SCENE_TEXT  // see lessons/exercises/02-scene-text
+// [anchor: scene-text]
 std::string scene_text(const Gas& gas) {
   std::string text = fmt::format(
-      "# written by gas at T = {:.17g}\n"
-      "a  {:.17g}\nT0 {:.17g}\nA1 {:.17g}\nA2 {:.17g}\nN  {}\n",
-      gas.time, gas.radius, gas.display_step, gas.width, gas.height, gas.balls.size());
+      "# A checkpoint written by gas (--dump) at model time T = {:.17g}.\n"
+      "# Each ball line is the ball's row as the run keeps it: its centre x y\n"
+      "# at the moment SINCE it last collided, its velocity vx vy, and SINCE;\n"
+      "# every number to 17 digits. Read back, the run goes on from T exactly.\n"
+      "T  {:.17g}\na  {:.17g}\nT0 {:.17g}\nA1 {:.17g}\nA2 {:.17g}\nN  {}\n"
+      "#    x y vx vy SINCE\n",
+      gas.time, gas.time, gas.radius, gas.display_step, gas.width, gas.height,
+      gas.balls.size());
   for (const Ball& ball : gas.balls) {
-    const Point centre = centre_at(ball, gas.time);
-    text += fmt::format("ball {:.17g} {:.17g} {:.17g} {:.17g}\n", centre.x, centre.y,
-                        ball.vx, ball.vy);
+    text += fmt::format("ball {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", ball.x, ball.y,
+                        ball.vx, ball.vy, ball.since);
   }
   return text;
 }
+// [/anchor: scene-text]
 #endif
 
 }  // namespace gas

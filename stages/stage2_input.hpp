@@ -1,7 +1,9 @@
 // Stage 2 — input.
 //
 // What this stage does: reads a scene file — the radius, the table, the
-// display step and the initial centre and velocity of every ball — checks
+// display step and the initial centre and velocity of every ball (or, in a
+// checkpoint written by --dump, the start time T and every ball's row with
+// the moment it was written) — checks
 // that it describes a gas the later stages can run, and builds the Gas.
 // The reading is split by job: a line into words, a word into a number, a
 // keyword line into what the file said; then the checks of the whole scene,
@@ -93,9 +95,12 @@ SceneDescription read_scene_description(const std::string& path);
 // parse_scene or read_scene_file (beyond/random_placement.hpp).
 Gas build_gas(const SceneDescription& scene);
 
-// The gas as a scene file that stage 2 reads back: the centres at the present
-// time T, every number with 17 significant digits (enough to give back the
-// same double).
+// The gas as a scene file that stage 2 reads back as the very same Gas, every
+// double to the bit: a checkpoint for --dump. It writes the present time T
+// (a line 'T') and each ball's row as it is, 'ball x y vx vy SINCE' (the
+// centre at the moment `since`, not recomputed at T, which would round),
+// every number with 17 significant digits (enough to give back the same
+// double).
 // [anchor: scene-text-declaration]
 std::string scene_text(const Gas& gas);
 // [/anchor: scene-text-declaration]

@@ -17,7 +17,8 @@
 //   step's segments alone, inside a whole border.
 // - The files: --events and --csv (headers, one row per collision and per
 //   frame), --dump (a scene read_scene_file accepts, equal to the same run
-//   done in this process).
+//   done in this process; continued from, it gives the uninterrupted run's
+//   collision lines bit for bit; its first frame shows its T).
 // - --bell: a '\a' for a run with collisions, none without --bell; at most
 //   one every bell_interval_seconds (bell_may_ring, and the program itself).
 #include <doctest/doctest.h>
@@ -553,6 +554,84 @@ TEST_SUITE("console") {
     const auto again = run_program({dump, "--frames", "1"});
     CHECK(again.status == 0);
     CHECK(again.err.empty());
+  }
+
+  TEST_CASE(
+      "a dump continues the run: to T1 with --dump, on from the dump to T2, the same "
+      "collision lines as one run to T2, bit for bit") {
+    const Scratch scratch;
+    // The lines of an events file after its header.
+    auto events = [](const std::string& path) {
+      std::vector<std::string> lines = lines_of(read_file(path));
+      REQUIRE(!lines.empty());
+      CHECK(lines[0] == "T,K,N1,N2");
+      lines.erase(lines.begin());
+      return lines;
+    };
+    auto check_continues = [&](const std::vector<std::string>& scene,
+                               const std::string& t1, const std::string& t2) {
+      CAPTURE(t1);
+      const std::string whole = scratch.file("whole.csv"), first = scratch.file("1.csv"),
+                        second = scratch.file("2.csv"), dump = scratch.file("d.scene");
+      auto with = [&](std::vector<std::string> arguments) {
+        arguments.insert(arguments.begin(), scene.begin(), scene.end());
+        return arguments;
+      };
+      REQUIRE(run_program(with({"--until", t2, "--events", whole})).status == 0);
+      REQUIRE(
+          run_program(with({"--until", t1, "--events", first, "--dump", dump})).status ==
+          0);
+      // --until is a moment of model time: the dump starts at T1, so "to T2".
+      REQUIRE(run_program({dump, "--until", t2, "--events", second}).status == 0);
+      std::vector<std::string> continued = events(first);
+      const std::vector<std::string> after = events(second);
+      REQUIRE(!after.empty());  // the test is about the collisions after the dump
+      continued.insert(continued.end(), after.begin(), after.end());
+      const std::vector<std::string> uninterrupted = events(whole);
+      REQUIRE(continued.size() == uninterrupted.size());
+      for (std::size_t i = 0; i < continued.size(); ++i) {
+        CAPTURE(i);
+        CHECK(continued[i] == uninterrupted[i]);
+      }
+    };
+    // The moment of a collision, as --events writes it (17 digits: the same
+    // double again), to stop the first run exactly on it.
+    auto collision_time = [&](const std::vector<std::string>& scene, std::size_t k) {
+      const std::string path = scratch.file("k.csv");
+      std::vector<std::string> arguments = scene;
+      for (const char* word : {"--until", "1000", "--events"}) arguments.push_back(word);
+      arguments.push_back(path);
+      REQUIRE(run_program(arguments).status == 0);
+      const std::vector<std::string> lines = events(path);
+      REQUIRE(lines.size() > k);
+      return lines[k].substr(0, lines[k].find(','));
+    };
+
+    SUBCASE("the default scene") {
+      const std::vector<std::string> seven;  // the built-in scene
+      for (const std::string t1 : {"7.25", "100", "1000"})
+        check_continues(seven, t1, "1500");
+      check_continues(seven, collision_time(seven, 40), "1500");
+    }
+    SUBCASE("the crowd") {
+      const std::vector<std::string> crowd = {"data/crowd.scene"};
+      for (const std::string t1 : {"7.25", "100"}) check_continues(crowd, t1, "250");
+      check_continues(crowd, collision_time(crowd, 150), "250");
+    }
+  }
+
+  TEST_CASE(
+      "a dump read back: the first frame's status line shows its T, and --until "
+      "at or before it takes no step") {
+    const Scratch scratch;
+    const std::string dump = scratch.file("d.scene");
+    REQUIRE(run_program({"--until", "123.5", "--dump", dump}).status == 0);
+    const auto frame = run_program({dump, "--frames", "1"});
+    REQUIRE(frame.status == 0);
+    CHECK(frame.out.rfind("T=124.500000 T0=1 ", 0) == 0);  // 123.5 and one step
+    const std::string again = scratch.file("again.scene");
+    REQUIRE(run_program({dump, "--until", "100", "--dump", again}).status == 0);
+    CHECK(read_file(again) == read_file(dump));
   }
 
   TEST_CASE(

@@ -12,7 +12,11 @@
 //   named, CRLF and a byte-order mark, the contact tolerance for touching
 //   balls; a 'random' line kept as a request that build_gas refuses.
 // - A missing file and a directory given as the scene.
-// - scene_text and stage 2 round-trip every number bit for bit.
+// - scene_text and stage 2 round-trip every number bit for bit: T and every
+//   ball's row with its `since`, also after runs of the default scene, the
+//   crowd and large-1000 (the --dump checkpoint).
+// - A scene's T and a ball's SINCE: the rows kept as written, the checks made
+//   on the centres at T; a scene without them means what it always meant.
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
@@ -303,59 +307,120 @@ TEST_SUITE("stage2") {
     CHECK_THROWS_AS(gas::read_scene_file(source_path("data")), gas::SceneError);
   }
 
-  TEST_CASE("scene_text then stage 2 gives back every number bit for bit") {
-    // Awkward numbers: thirds and tenths (not exact in binary), the tiniest
-    // and largest magnitudes stage 2 accepts, a negative zero, and random ones
-    // (fixed seed).
+  TEST_CASE("scene_text then stage 2 gives back the very same gas, every double") {
+    // A --dump is a checkpoint: T, and every ball's row as the run keeps it
+    // (x, y at its own moment `since`, vx, vy, since) must come back bit for
+    // bit, or the continued run is soon another one (lesson 9). Awkward
+    // numbers: thirds and tenths (not exact in binary), the tiniest and
+    // largest magnitudes stage 2 accepts, a negative zero, and random ones
+    // (fixed seed), some with a `since` before T.
     gas::Gas g;
     g.radius = 1.0 / 3;
     g.width = 1000.1;
     g.height = 700.0 / 3;
     g.display_step = 0.1;
+    g.time = 12.345678901234567;
     const std::vector<double> awkward = {1.0 / 3,    0.1,      1.7e-75, -0.0,
                                          1e15 + 0.5, -2.0 / 7, 9.9e74};
     for (std::size_t i = 0; i < awkward.size(); ++i) {
+      // Written at T: with speeds up to 9.9e74 any flight would leave the table.
       const double x = 1 + 2 * static_cast<double>(i) + 1.0 / 7;
       g.balls.push_back(
-          {x, 100 + x / 3, awkward[i], -awkward[awkward.size() - 1 - i], 0});
+          {x, 100 + x / 3, awkward[i], -awkward[awkward.size() - 1 - i], g.time});
     }
     std::mt19937_64 random(1989);
-    std::uniform_real_distribution<double> across(1, 999), down(1, 232), speed(-3, 3);
+    std::uniform_real_distribution<double> across(20, 980), down(20, 213), speed(-3, 3),
+        before(0, 5);
     while (g.balls.size() < 40) {
-      const gas::Ball b{across(random), down(random), speed(random), speed(random), 0};
+      // The centre at T is (x, y); the row is where the ball was at `since`.
+      const double x = across(random), y = down(random);
+      const double vx = speed(random), vy = speed(random), flight = before(random);
+      const gas::Ball b{x - vx * flight, y - vy * flight, vx, vy, g.time - flight};
       bool free = true;
-      for (const gas::Ball& other : g.balls)
-        free = free && std::hypot(b.x - other.x, b.y - other.y) > 1;
+      for (const gas::Ball& other : g.balls) {
+        const gas::Point p = gas::centre_at(other, g.time);
+        free = free && std::hypot(x - p.x, y - p.y) > 1;
+      }
       if (free) g.balls.push_back(b);
     }
 
-    auto same = [](const gas::Gas& back, const gas::Gas& original, double time) {
+    auto same = [](const gas::Gas& back, const gas::Gas& original) {
       CHECK(bits(back.radius) == bits(original.radius));
       CHECK(bits(back.width) == bits(original.width));
       CHECK(bits(back.height) == bits(original.height));
       CHECK(bits(back.display_step) == bits(original.display_step));
+      CHECK(bits(back.time) == bits(original.time));
       REQUIRE(back.balls.size() == original.balls.size());
       for (std::size_t i = 0; i < back.balls.size(); ++i) {
         CAPTURE(i);
-        const gas::Point centre = gas::centre_at(original.balls[i], time);
-        CHECK(bits(back.balls[i].x) == bits(centre.x));
-        CHECK(bits(back.balls[i].y) == bits(centre.y));
+        CHECK(bits(back.balls[i].x) == bits(original.balls[i].x));
+        CHECK(bits(back.balls[i].y) == bits(original.balls[i].y));
         CHECK(bits(back.balls[i].vx) == bits(original.balls[i].vx));
         CHECK(bits(back.balls[i].vy) == bits(original.balls[i].vy));
+        CHECK(bits(back.balls[i].since) == bits(original.balls[i].since));
       }
     };
-    SUBCASE("at T = 0") {
-      same(read_text(gas::scene_text(g), "round"), g, 0);
-    }
-
-    SUBCASE("after a run: the centres at T, written with 17 digits") {
-      gas::Control control =
-          gas::start_control_for(gas::read_scene_file(source_path("data/crowd.scene")));
-      while (control.gas.time < 123.25) gas::take_step(control, 123.25, nullptr);
+    // `scene` run to model time `until` (stopping there exactly), then
+    // written and read back.
+    auto run_and_round_trip = [&](const gas::Gas& scene, double until) {
+      CAPTURE(until);
+      gas::Control control = gas::start_control_for(scene);
+      while (control.gas.time < until) gas::take_step(control, until, nullptr);
       REQUIRE(control.wall_collisions + control.ball_collisions > 0);
-      same(read_text(gas::scene_text(control.gas), "round"), control.gas,
-           control.gas.time);
+      same(read_text(gas::scene_text(control.gas), "round"), control.gas);
+    };
+
+    SUBCASE("awkward numbers, rows written before T") {
+      same(read_text(gas::scene_text(g), "round"), g);
     }
+    SUBCASE("the same at T = 0") {
+      g.time = 0;
+      for (gas::Ball& ball : g.balls) ball.since = 0;
+      same(read_text(gas::scene_text(g), "round"), g);
+    }
+    SUBCASE("the default scene, run to several times") {
+      const gas::Gas seven = gas::read_scene_file(source_path("data/default.scene"));
+      for (const double until : {40.0, 123.25, 1000.0, 5000.0 / 3})
+        run_and_round_trip(seven, until);
+    }
+    SUBCASE("the crowd and 1000 random balls") {
+      run_and_round_trip(gas::read_scene_file(source_path("data/crowd.scene")), 123.25);
+      run_and_round_trip(gas::read_scene_file(source_path("data/large-1000.scene")),
+                         20.5);
+    }
+  }
+
+  TEST_CASE(
+      "a scene's T and a ball's SINCE: rows kept as written, every check at T, and "
+      "without them a scene means what it always meant") {
+    // The old form: T = 0, and each row written at T.
+    const gas::Gas old = read_text(small_table + "ball 50 60 1 -2\n");
+    CHECK(old.time == 0);
+    CHECK(old.balls[0].since == 0);
+    CHECK(old.balls[0].x == 50);
+
+    // A 'T' line alone: the rows without SINCE are centres at T.
+    const gas::Gas later = read_text("T 10\n" + small_table + "ball 50 60 1 -2\n");
+    CHECK(later.time == 10);
+    CHECK(later.balls[0].since == 10);
+    CHECK(later.balls[0].x == 50);
+
+    // A row written at SINCE = 4: kept as it is, although its (x, y) = (2, 60)
+    // is outside the table (a = 4); at T = 10 the centre (8, 60) is inside.
+    const gas::Gas flown =
+        read_text("T 10\n" + small_table + "ball 2 60 1 0 4\nball 20 60 0 0\n");
+    CHECK(flown.balls[0].x == 2);
+    CHECK(flown.balls[0].since == 4);
+    CHECK(flown.balls[1].since == 10);
+
+    // Rows that overlap as written (both at (50, 50)) but not at T = 10:
+    // ball 1 has flown 10 to the left since 0, ball 2 stood.
+    const gas::Gas apart =
+        read_text("T 10\n" + small_table + "ball 50 50 -1 0 0\nball 50 50 0 0 10\n");
+    CHECK(apart.balls.size() == 2);
+
+    // SINCE = T is allowed (a row just written), and 'T 0' is the default.
+    CHECK(read_text("T 0\n" + small_table + "ball 50 50 1 0 0\n").balls[0].since == 0);
   }
 
   TEST_CASE(

@@ -46,10 +46,12 @@ class PlacedBalls {
     for (std::size_t i = 0; i < gas.balls.size(); ++i) file(i);
   }
 
-  // Files ball `index` of the gas in its cell.
+  // Files ball `index` of the gas in its cell (where its centre is at the
+  // scene's T: a 'ball' line may give its row at an earlier SINCE).
   void file(std::size_t index) {
-    const Ball& ball = gas_.balls[index];
-    const std::size_t cell = cell_index(cells_.column_of(ball.x), cells_.row_of(ball.y));
+    const Point centre = centre_at(gas_.balls[index], gas_.time);
+    const std::size_t cell =
+        cell_index(cells_.column_of(centre.x), cells_.row_of(centre.y));
     next_[index] = head_[cell];
     head_[cell] = index + 1;
   }
@@ -61,7 +63,8 @@ class PlacedBalls {
       for (int c = std::max(0, column - 1); c <= std::min(cells_.columns - 1, column + 1);
            ++c) {
         for (std::size_t k = head_[cell_index(c, r)]; k != 0; k = next_[k - 1]) {
-          const double dx = gas_.balls[k - 1].x - x, dy = gas_.balls[k - 1].y - y;
+          const Point centre = centre_at(gas_.balls[k - 1], gas_.time);
+          const double dx = centre.x - x, dy = centre.y - y;
           if (dx * dx + dy * dy < diameter_ * diameter_) return false;
         }
       }
@@ -96,7 +99,7 @@ void place_centres(const SceneDescription& scene, double covered,
       const double x = gas.radius + (gas.width - diameter) * unit_interval(generator);
       const double y = gas.radius + (gas.height - diameter) * unit_interval(generator);
       if (placed.free(x, y)) {
-        gas.balls.push_back(Ball{x, y, 0, 0, 0});
+        gas.balls.push_back(Ball{x, y, 0, 0, gas.time});  // its row written at T
         placed.file(gas.balls.size() - 1);
         found = true;
       }

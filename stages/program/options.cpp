@@ -219,7 +219,7 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|s
 
   SCENE            a scene file (see data/README.md); none: the built-in default scene
   --frames N       take N display steps, then exit
-  --until T        run until model time T exactly, then exit
+  --until T        run until model time T, then exit (absolute: a --dump starts at its T)
   --keys KEYS      press one key per display step ('.' for none) instead of the keyboard
   --mode M         the screen: balls (moving balls), trails (trajectories),
                    stats (figures only); default balls

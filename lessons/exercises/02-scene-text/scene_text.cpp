@@ -14,8 +14,8 @@
 namespace gas {
 
 std::string scene_text([[maybe_unused]] const Gas& gas) {
-  // TODO: the lines a, T0, A1, A2 and N, then one line "ball x y vx vy" for
-  // every ball, its centre taken at the present time gas.time.
+  // TODO: the lines T, a, T0, A1, A2 and N, then one line
+  // "ball x y vx vy since" for every ball: its row as it is.
   return "";  // placeholder: an empty scene, which stage 2 refuses
 }
 

@@ -6,9 +6,8 @@
 //
 // Each test writes a gas with scene_text and reads the text back with the
 // project's own reader (stage 2: parse_scene_description, then build_gas),
-// then compares. A scene always starts at T = 0, so only the table, T0, the
-// centres and the velocities come back; the checks ask for them bit for bit,
-// because that is what "reads back exactly" means.
+// then compares: the table, T0, T and every ball's row (x, y, vx, vy and
+// since), bit for bit, because that is what "reads back exactly" means.
 #include <doctest/doctest.h>
 
 #include <cstddef>
@@ -77,14 +76,18 @@ TEST_SUITE("exercise-02") {
                {{odd.balls[0].x, odd.balls[0].y}, {odd.balls[1].x, odd.balls[1].y}});
   }
 
-  EXERCISE_TEST("exercise-02 the centres written are the centres at the present time T") {
-    // T = 10. Ball 1's row was written at 4: at 10 its centre is
-    // (20 + 1.5 * 6, 15 - 0.5 * 6) = (29, 12). Ball 2's row was written at 10.
+  EXERCISE_TEST("exercise-02 T and every row come back as they are, with since") {
+    // T = 10. Ball 1's row was written at 4: (20, 15) is its centre at 4, at 10
+    // it is at (29, 12). Ball 2's row was written at 10. A checkpoint keeps the
+    // rows, not the centres at T (recomputing them rounds).
     const gas::Gas now =
         gas::exercises::table({{20, 15, 1.5, -0.5, 4}, {5, 25, -1, 0.25, 10}}, 10);
-    INFO("a scene has no `since`: write each centre where it is at T (centre_at)");
+    INFO("write the line 'T 10' and each row as it is: 'ball x y vx vy since'");
     const gas::Gas read = read_back(gas::scene_text(now));
-    check_same(read, now, {{29, 12}, {5, 25}});
+    check_same(read, now, {{20, 15}, {5, 25}});
+    CHECK(read.time == 10);
+    CHECK(read.balls[0].since == 4);
+    CHECK(read.balls[1].since == 10);
   }
 
   EXERCISE_TEST("exercise-02 many balls come back in order and N is written") {
