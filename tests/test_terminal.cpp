@@ -213,6 +213,20 @@ std::optional<Terminal> last_screen(const std::string& output, std::size_t from,
   return terminal;
 }
 
+// Resizes the window to `columns` x `rows`, lets the program answer, and
+// returns the screen it drew afresh after the resize, checked to lie within
+// the window (nothing written or moved to outside it).
+std::optional<Terminal> screen_after_resize(PtyRun& run, int columns, int rows) {
+  const std::size_t mark = run.output().size();
+  run.resize(columns, rows);
+  run.read_for(800);
+  auto after = last_screen(run.output(), mark, columns, rows);
+  REQUIRE_MESSAGE(after, "no clear-screen after the resize");
+  CHECK(after->outside == 0);
+  CHECK(after->moves_outside == 0);
+  return after;
+}
+
 // Does `terminal` show a status line over a whole table: a top border
 // "+---+", rows "|...|" of the same width, and a bottom border?
 bool shows_whole_frame(const Terminal& terminal) {
@@ -244,12 +258,7 @@ TEST_SUITE("console") {
     CHECK(before->line(2).size() > 50);  // the 80-column table, wider than 50
 
     const std::size_t mark = run.output().size();
-    run.resize(50, 15);
-    run.read_for(800);
-    const auto after = last_screen(run.output(), mark, 50, 15);
-    REQUIRE_MESSAGE(after, "no clear-screen after the resize");
-    CHECK(after->outside == 0);
-    CHECK(after->moves_outside == 0);
+    const auto after = screen_after_resize(run, 50, 15);
     CHECK(shows_whole_frame(*after));
     CHECK(after->line(2).size() <= 50);
     CHECK(after->line(1).size() <= 50);  // the status line cut to the window
@@ -315,13 +324,7 @@ TEST_SUITE("console") {
   TEST_CASE("--cols and --rows keep their size in a smaller window, cut at its edges") {
     PtyRun run(80, 24, {"--cols", "100", "--rows", "30"});
     run.read_for(400);
-    const std::size_t mark = run.output().size();
-    run.resize(50, 15);
-    run.read_for(800);
-    const auto after = last_screen(run.output(), mark, 50, 15);
-    REQUIRE_MESSAGE(after, "no clear-screen after the resize");
-    CHECK(after->outside == 0);
-    CHECK(after->moves_outside == 0);
+    const auto after = screen_after_resize(run, 50, 15);
     // The table of 70 columns, cut: a top border with no right corner.
     CHECK(after->line(2).size() == 50);
     CHECK(after->line(2).find_first_not_of('-', 1) == std::string::npos);
