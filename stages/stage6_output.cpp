@@ -142,12 +142,7 @@ void Display::show(const TextScreen& screen, const std::string& status,
   // its last row but one (the cursor's).
   if (window_rows_ > 0 && frame.size() + 1 > static_cast<std::size_t>(window_rows_))
     frame.resize(static_cast<std::size_t>(std::max(window_rows_ - 1, 1)));
-  if (window_columns_ > 0) {
-    for (std::string& line : frame) {
-      if (line.size() > static_cast<std::size_t>(window_columns_))
-        line.resize(static_cast<std::size_t>(window_columns_));
-    }
-  }
+  for (std::string& line : frame) cut_to_window(line);
 
   std::string out;
   if (shown_.size() != frame.size()) {
@@ -189,6 +184,11 @@ void Display::show(const TextScreen& screen, const std::string& status,
   std::fflush(out_);
 }
 
+void Display::cut_to_window(std::string& line) const {
+  if (window_columns_ > 0 && line.size() > static_cast<std::size_t>(window_columns_))
+    line.resize(static_cast<std::size_t>(window_columns_));
+}
+
 void Display::notice(const std::string& line) {
   if (!terminal_) {
     fmt::print(out_, "{}\n", line);
@@ -196,8 +196,7 @@ void Display::notice(const std::string& line) {
     return;
   }
   std::string text = line;
-  if (window_columns_ > 0 && text.size() > static_cast<std::size_t>(window_columns_))
-    text.resize(static_cast<std::size_t>(window_columns_));
+  cut_to_window(text);
   if (!notice_.empty() && notice_ == text) return;  // already on the terminal
   // Hide the cursor, clear the screen, the line at the top; the next frame is
   // drawn whole.

@@ -105,6 +105,8 @@ class Display {
   void finish();
 
  private:
+  void cut_to_window(std::string& line) const;  // at the window's right edge
+
   std::FILE* out_;
   bool terminal_;
   bool colour_;

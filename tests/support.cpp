@@ -49,6 +49,17 @@ std::string read_file(const std::string& path) {
   return text.str();
 }
 
+Scratch::Scratch()
+    : path(std::filesystem::temp_directory_path() /
+           fmt::format("gas-test-{}-{}", getpid(), std::rand())) {
+  std::filesystem::create_directories(path);
+}
+
+Scratch::~Scratch() {
+  std::error_code ignored;  // a destructor must not throw
+  std::filesystem::remove_all(path, ignored);
+}
+
 namespace {
 
 // A single-quoted shell word.
@@ -69,12 +80,10 @@ std::string quoted(const std::string& word) {
 
 ProgramRun run_program(const std::vector<std::string>& arguments,
                        const std::string& input) {
-  const auto scratch = std::filesystem::temp_directory_path() /
-                       fmt::format("gas-test-{}-{}", getpid(), std::rand());
-  std::filesystem::create_directories(scratch);
-  const std::string in = (scratch / "in").string();
-  const std::string out = (scratch / "out").string();
-  const std::string err = (scratch / "err").string();
+  const Scratch scratch;
+  const std::string in = scratch.file("in");
+  const std::string out = scratch.file("out");
+  const std::string err = scratch.file("err");
   std::ofstream(in, std::ios::binary) << input;
   std::string command =
       fmt::format("cd {} && {}", quoted(GAS_SOURCE_DIR), quoted(GAS_PROGRAM));
@@ -86,7 +95,6 @@ ProgramRun run_program(const std::vector<std::string>& arguments,
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   run.out = read_file(out);
   run.err = read_file(err);
-  std::filesystem::remove_all(scratch);
   return run;
 }
 

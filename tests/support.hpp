@@ -2,6 +2,7 @@
 // program, and golden files (expected outputs kept in data/).
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,16 @@ namespace gas::testing {
 // A hand-made gas for the stage tests: a 40 x 30 table with balls of
 // radius 1, so that centres stay in [1, 39] x [1, 29].
 gas::Gas table_with(std::vector<gas::Ball> balls, double time = 0);
+
+// A fresh folder for the files one test makes, removed with this object.
+struct Scratch {
+  std::filesystem::path path;  // the folder
+  Scratch();
+  ~Scratch();
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
 
 // Figures of stage 6 with a value in every field, numbers that need many
 // digits among them (T = 12.5, T0 = 0.5, 4 wall and 3 ball collisions, ...).

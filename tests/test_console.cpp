@@ -68,14 +68,7 @@ std::string usage_error(const std::vector<std::string>& arguments) {
   return "";
 }
 
-// A fresh scratch directory for files the program writes; removed at the end.
-struct Scratch {
-  fs::path path = fs::temp_directory_path() /
-                  fmt::format("gas-console-test-{}-{}", getpid(), std::rand());
-  Scratch() { fs::create_directories(path); }
-  ~Scratch() { fs::remove_all(path); }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-};
+using gas::testing::Scratch;
 
 // The frames of a plain (not a terminal) run: each a status line starting
 // "T=", then a screen from a '+' border line to the next one.

@@ -29,14 +29,7 @@ namespace fs = std::filesystem;
 using gas::testing::read_file;
 using gas::testing::source_path;
 
-// A folder of its own for one test's files, removed afterwards.
-struct Scratch {
-  fs::path folder = fs::temp_directory_path() /
-                    fmt::format("gas-interrupt-{}-{}", getpid(), std::rand());
-  Scratch() { fs::create_directories(folder); }
-  ~Scratch() { fs::remove_all(folder); }
-  std::string path(const std::string& name) const { return (folder / name).string(); }
-};
+using gas::testing::Scratch;
 
 // The lines of a text; the text must end with '\n' (whole lines only).
 std::vector<std::string> whole_lines(const std::string& text) {
@@ -110,9 +103,9 @@ TEST_SUITE("console") {
     for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
       CAPTURE(signal);
       const Scratch scratch;
-      const std::string events = scratch.path("events.csv"),
-                        csv = scratch.path("figures.csv"),
-                        dump = scratch.path("end.scene"), err = scratch.path("err");
+      const std::string events = scratch.file("events.csv"),
+                        csv = scratch.file("figures.csv"),
+                        dump = scratch.file("end.scene"), err = scratch.file("err");
       // The crowd for ever, every file asked for; the signal comes once the
       // events file has passed its first buffer (so the run is mid-stride).
       const pid_t child = start_gas({source_path("data/crowd.scene"), "--until", "1e9",
@@ -150,7 +143,7 @@ TEST_SUITE("console") {
       const double dump_time = std::stod(dumped.substr(dumped.find("T = ") + 4));
       CHECK(dump_time >= last);
       // Nothing else left beside them (no temporary file of the dump).
-      CHECK(std::distance(fs::directory_iterator(scratch.folder),
+      CHECK(std::distance(fs::directory_iterator(scratch.path),
                           fs::directory_iterator()) == 4);
     }
   }
@@ -171,14 +164,14 @@ TEST_SUITE("console") {
 
   TEST_CASE("write_whole replaces a file whole and leaves no temporary file") {
     const Scratch scratch;
-    const std::string path = scratch.path("d.scene");
+    const std::string path = scratch.file("d.scene");
     std::ofstream(path) << "an old scene\n";
     CHECK_FALSE(gas::write_whole(path, "a new scene\n").has_value());
     CHECK(read_file(path) == "a new scene\n");
-    CHECK(std::distance(fs::directory_iterator(scratch.folder),
-                        fs::directory_iterator()) == 1);
+    CHECK(std::distance(fs::directory_iterator(scratch.path), fs::directory_iterator()) ==
+          1);
     // A folder that does not exist: a message, and nothing made.
-    const auto failure = gas::write_whole(scratch.path("no/d.scene"), "x\n");
+    const auto failure = gas::write_whole(scratch.file("no/d.scene"), "x\n");
     REQUIRE(failure.has_value());
     CHECK(failure->find("no/d.scene: cannot be written") != std::string::npos);
   }

@@ -62,13 +62,14 @@ std::optional<long long> frame_limit(const Options& options, bool terminal) {
 // --trace, before the loop: what stages 1, 2 and 3 have set up — the
 // article's variables with their values, where the scene was read from, the
 // limits G1 and G2 of the centres, and the screen.
-void trace_preparation(const Gas& gas, const std::string& scene_name,
+void trace_preparation(const Control& control, const std::string& scene_name,
                        const TextScreen& screen, ScreenMode mode) {
+  const Gas& gas = control.gas;
+  const CentreLimits& limits = control.limits;  // stage 3's, kept by stage 7
   const std::size_t n = gas.balls.size();
   fmt::print("stage 1  variables and data: N={} a={} A1={} A2={} T={} T0={}\n", n,
              gas.radius, gas.width, gas.height, gas.time, gas.display_step);
   fmt::print("stage 2  input: {} ball{} from {}\n", n, n == 1 ? "" : "s", scene_name);
-  const CentreLimits limits = centre_limits(gas);
   fmt::print(
       "stage 3  screen preparation: a={} <= x <= G1=A1-a={}, a <= y <= G2=A2-a={}\n",
       limits.x_min, limits.x_max, limits.y_max);
@@ -131,9 +132,12 @@ class ConsoleRun {
         display_(stdout, terminal_, terminal_ && std::getenv("NO_COLOR") == nullptr),
         grid_(grid_size(options, terminal_)),
         frame_limit_(frame_limit(options, terminal_)),
-        measurements_(control_, grid_.columns),
         outputs_(options, display_),
         screen_(prepare()) {
+    // Kinetic theory only for a run that shows or writes its figures: the
+    // statistics screen or --csv. (Its record walks every ball each step.)
+    if (options.mode == ScreenMode::stats || options.csv_path)
+      measurements_.emplace(control_, grid_.columns);
     // Drawn in place: the frame fits the window, and fits it again when it
     // changes size (resize()).
     if (const auto size = terminal_size(); terminal_ && size)
@@ -145,8 +149,7 @@ class ConsoleRun {
   // 4 and 5 take one display step (back to stage 4 at every collision); then
   // stage 6 draws it. Returns the exit status.
   int run() {
-    if (options_.trace)
-      trace_preparation(control_.gas, scene_name(), screen_, options_.mode);
+    if (options_.trace) trace_preparation(control_, scene_name(), screen_, options_.mode);
     install_interrupt_flag();  // Ctrl-C, SIGTERM, SIGHUP: end the run as E would
     KeySource keys(options_, keyboard_);
     std::FILE* const trace = options_.trace ? stdout : nullptr;
@@ -170,12 +173,15 @@ class ConsoleRun {
       // Stages 4 and 5 (and stage 7 going back to stage 4 at a collision).
       const Step step = take_step(control_, options_.until.value_or(never), trace);
       ++frames_done;
-      measurements_.record(control_);
       const Figures figures = figures_of(control_);
+      std::optional<KineticFigures> kinetic;  // worked out once, for both uses
+      if (measurements_) {
+        measurements_->record(control_);
+        kinetic = measurements_->figures(control_);
+      }
       outputs_.record(step);
-      if (outputs_.writes_csv())
-        outputs_.write_csv(figures, measurements_.figures(control_));
-      show(figures, !step.collisions.empty());  // stage 6
+      if (kinetic && outputs_.writes_csv()) outputs_.write_csv(figures, *kinetic);
+      show(figures, kinetic ? &*kinetic : nullptr, !step.collisions.empty());  // stage 6
       if (!keys.wait_after_step(step.length / control_.gas.display_step)) break;
     }
     // However the run ends: the terminal put back, the files closed whole.
@@ -215,10 +221,7 @@ class ConsoleRun {
     for (const char key : keys) {
       const KeyEffect effect = press_key(control_, key);
       if (effect == KeyEffect::end) return false;
-      if (effect == KeyEffect::redraw) {
-        screen_ = prepare();  // back to stage 3
-        display_.invalidate();
-      }
+      if (effect == KeyEffect::redraw) prepare_again();
     }
     return true;
   }
@@ -229,9 +232,14 @@ class ConsoleRun {
   void resize() {
     grid_ = grid_size(options_, true);
     if (const auto size = terminal_size()) display_.fit_window(size->columns, size->rows);
+    prepare_again();
+    show(figures_of(control_));
+  }
+
+  // Back to stage 3: the screen laid out afresh, and drawn whole next time.
+  void prepare_again() {
     screen_ = prepare();
     display_.invalidate();
-    show(figures_of(control_));
   }
 
   // Stage 3: the table's screen, or for the figures a plain character screen.
@@ -241,10 +249,12 @@ class ConsoleRun {
                : prepare_screen(control_.gas, grid_.columns, grid_.rows);
   }
 
-  // Stage 6: draws the screen the options ask for and sends it out. With
+  // Stage 6: draws the screen the options ask for and sends it out, with
+  // kinetic theory's figures if the step has worked them out already. With
   // --trace it says when the step ended on a collision (T = TC): the
   // article's picture freezes there while stage 4 computes the next one.
-  void show(const Figures& figures, bool at_collision = false) {
+  void show(const Figures& figures, const KineticFigures* kinetic = nullptr,
+            bool at_collision = false) {
     if (grid_.too_small) {  // until the window grows: one line, no frame
       display_.notice(fmt::format("window too small: at least {} x {}", smallest_columns,
                                   smallest_rows + 2));
@@ -265,7 +275,8 @@ class ConsoleRun {
         draw_trails(screen_, control_.picture, tone);
         break;
       case ScreenMode::stats:
-        draw_kinetic_figures(screen_, figures, measurements_.figures(control_));
+        draw_kinetic_figures(screen_, figures,
+                             kinetic ? *kinetic : measurements_->figures(control_));
         break;
     }
     display_.show(screen_, status_line(figures, options_.mode, control_.stopped), tone);
@@ -279,8 +290,8 @@ class ConsoleRun {
   Display display_;
   GridSize grid_;
   std::optional<long long> frame_limit_;
-  Measurements measurements_;
   RunOutputs outputs_;
+  std::optional<Measurements> measurements_;  // for --mode stats and --csv only
   TextScreen screen_;
 };
 

@@ -21,6 +21,29 @@ bool bell_may_ring(std::chrono::steady_clock::time_point last,
   return now - last >= std::chrono::duration<double>(bell_interval_seconds);
 }
 
+namespace {
+
+// "FILE: cannot be written (errno's reason)".
+std::string cannot_write(const std::string& path) {
+  return fmt::format("{}: cannot be written ({})", path, std::strerror(errno));
+}
+
+// A new file beside `path` (a rename stays within one file system), named in
+// `name`, with the permissions fopen would give it (0666 less the umask:
+// mkstemp makes it for its owner alone). Its descriptor, or -1 (errno set).
+int new_file_beside(const std::string& path, std::string& name) {
+  name = path + ".XXXXXX";
+  const int descriptor = mkstemp(name.data());
+  if (descriptor >= 0) {
+    const mode_t mask = umask(0);
+    umask(mask);
+    fchmod(descriptor, 0666 & ~mask);
+  }
+  return descriptor;
+}
+
+}  // namespace
+
 OutputFile::OutputFile(const std::optional<std::string>& path) {
   if (!path) return;
   path_ = *path;
@@ -29,8 +52,7 @@ OutputFile::OutputFile(const std::optional<std::string>& path) {
 }
 
 void OutputFile::fail() {
-  if (!failure_)
-    failure_ = fmt::format("{}: cannot be written ({})", path_, std::strerror(errno));
+  if (!failure_) failure_ = cannot_write(path_);
 }
 
 void OutputFile::write(std::string_view text) {
@@ -46,48 +68,39 @@ void OutputFile::close() {
 }
 
 std::optional<std::string> write_whole(const std::string& path, const std::string& text) {
-  // The new file beside the old one (a rename stays within one file system).
-  std::string temporary = path + ".XXXXXX";
-  const int descriptor = mkstemp(temporary.data());
-  if (descriptor < 0)
-    return fmt::format("{}: cannot be written ({})", path, std::strerror(errno));
-  // mkstemp makes the file for its owner alone; give it the permissions
-  // any new file gets (0666 less the umask), as fopen would.
-  const mode_t mask = umask(0);
-  umask(mask);
-  fchmod(descriptor, 0666 & ~mask);
-  std::size_t done = 0;
-  while (done < text.size()) {
+  std::string temporary;
+  const int descriptor = new_file_beside(path, temporary);
+  if (descriptor < 0) return cannot_write(path);
+  // All of it, and on the disk, before it takes the old file's name; each
+  // failure is described by the errno of the call that failed.
+  std::optional<std::string> failure;
+  for (std::size_t done = 0; !failure && done < text.size();) {
     const ssize_t wrote = ::write(descriptor, text.data() + done, text.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;  // a signal: the flag is seen later
-    if (wrote <= 0) break;
-    done += static_cast<std::size_t>(wrote);
+    if (wrote > 0) {
+      done += static_cast<std::size_t>(wrote);
+    } else if (!(wrote < 0 && errno == EINTR)) {  // a signal: the flag is seen later
+      failure = cannot_write(path);
+    }
   }
-  const std::string reason = std::strerror(errno);
-  // Whole on the disk before it takes the old file's name.
-  const bool whole = done == text.size() && fsync(descriptor) == 0;
-  const bool closed = ::close(descriptor) == 0;
-  if (!whole || !closed || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string why = whole && closed ? std::strerror(errno) : reason;
-    std::remove(temporary.c_str());
-    return fmt::format("{}: cannot be written ({})", path, why);
-  }
-  return std::nullopt;
+  if (!failure && fsync(descriptor) != 0) failure = cannot_write(path);
+  if (::close(descriptor) != 0 && !failure) failure = cannot_write(path);
+  if (!failure && std::rename(temporary.c_str(), path.c_str()) != 0)
+    failure = cannot_write(path);
+  if (failure) std::remove(temporary.c_str());
+  return failure;
 }
 
 RunOutputs::RunOutputs(const Options& options, Display& display)
     : events_(options.events_path),
       csv_(options.csv_path),
-      events_path_(options.events_path),
-      csv_path_(options.csv_path),
       dump_path_(options.dump_path),
       bell_(options.bell),
       display_(display) {
   // A dump is written at the end; whether it can be is asked now, so that a
   // bad path fails before the run, not after it.
   if (dump_path_) {
-    std::string probe = *dump_path_ + ".XXXXXX";
-    const int descriptor = mkstemp(probe.data());
+    std::string probe;
+    const int descriptor = new_file_beside(*dump_path_, probe);
     if (descriptor < 0)
       throw std::runtime_error(fmt::format("{}: cannot write this file", *dump_path_));
     ::close(descriptor);
@@ -128,8 +141,9 @@ std::optional<std::string> RunOutputs::failure() const {
 
 std::vector<std::string> RunOutputs::written() const {
   std::vector<std::string> files;
-  for (const auto* path : {&events_path_, &csv_path_, &dump_path_})
-    if (*path) files.push_back(**path);
+  for (const OutputFile* file : {&events_, &csv_})
+    if (*file) files.push_back(file->path());
+  if (dump_path_) files.push_back(*dump_path_);
   return files;
 }
 

@@ -42,7 +42,9 @@ class OutputFile {
   // Opens `path` for writing, if there is one. Throws std::runtime_error if
   // the file cannot be written.
   explicit OutputFile(const std::optional<std::string>& path);
-  explicit operator bool() const { return file_ != nullptr; }
+  // Was a file asked for (its name: path())?
+  explicit operator bool() const { return !path_.empty(); }
+  const std::string& path() const { return path_; }
 
   // Writes `text`, whole lines.
   void write(std::string_view text);
@@ -98,7 +100,6 @@ class RunOutputs {
 
   OutputFile events_;                                  // --events
   OutputFile csv_;                                     // --csv
-  std::optional<std::string> events_path_, csv_path_;  // their names
   std::optional<std::string> dump_path_;               // --dump
   std::optional<std::string> dump_failure_;            // why --dump was not written
   bool bell_ = false;                                  // --bell
