@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -321,7 +322,12 @@ double start_time(const SceneText& scene) {
 }
 
 // Check the times of a scene that carries them (a --dump): T is not negative
-// (model time starts at 0 and only goes on), and no row was written after T.
+// (model time starts at 0 and only goes on), no row was written after T, and
+// T leaves the clock fine enough to follow the gas. Doubles near T lie
+// T * 2^-52 apart; the quickest crossing of the room between two walls (the
+// smaller of A1 - 2a and A2 - 2a, at the highest speed along an axis) must
+// last at least 2^20 of those steps, or stage 4's times, added to T, would
+// round back to T and time could not move on.
 // [anchor: check-times]
 void check_times(const SceneText& scene) {
   const double now = start_time(scene);
@@ -336,6 +342,19 @@ void check_times(const SceneText& scene) {
                        "T = {} (a row cannot be written in the future)",
                        i + 1, scene.balls[i].since, now));
     }
+  }
+  double fastest = scene.random ? 1.5 * scene.random->speed : 0.0;
+  for (const Ball& ball : scene.balls)
+    fastest = std::max({fastest, std::fabs(ball.vx), std::fabs(ball.vy)});
+  const double a = scene.radius->value;
+  const double crossing =
+      (std::min(scene.width->value, scene.height->value) - 2 * a) / fastest;
+  if (fastest > 0 && now * 0x1.0p-32 > crossing) {
+    fail(scene.file_name, scene.start_time->line,
+         fmt::format("T = {} is too late for this gas: the clock could not tell apart "
+                     "moments {:.3g} apart (the quickest crossing of the table); T may "
+                     "be at most {:.6g}",
+                     now, crossing, crossing * 0x1.0p32));
   }
 }
 // [/anchor: check-times]
