@@ -531,7 +531,8 @@ TEST_SUITE("console") {
       CHECK(csv_lines[0] == gas::csv_header());
       CHECK(csv_lines.size() - 1 == frames.size());
       for (std::size_t i = 1; i < csv_lines.size(); ++i) {
-        CHECK(std::count(csv_lines[i].begin(), csv_lines[i].end(), ',') == 23);
+        CHECK(std::count(csv_lines[i].begin(), csv_lines[i].end(), ',') ==
+              std::count(csv_lines[0].begin(), csv_lines[0].end(), ','));
       }
       CHECK(csv_lines.back().rfind("60,", 0) == 0);
     }

@@ -30,11 +30,13 @@ TEST_SUITE("kinetic-theory") {
     big.wall_collisions = 1234567;
     gas::KineticFigures small_kinetic;
     gas::KineticFigures big_kinetic;
-    big_kinetic.compressibility = {2.0625, 0.0125};
-    big_kinetic.theory.compressibility = 2.0637755;
-    const std::vector<std::string> labels = {"mean speed",     "rms speed",
-                                             "pressure",       "Z = P Ac/(N kT)",
-                                             "collision rate", "mean free path"};
+    big_kinetic.measured.bulk_z = {2.0625, 0.0125};
+    big_kinetic.bulk_z_theory = 2.0637755;
+    // The rows with a theory column, and where they are.
+    const std::vector<std::pair<std::string, std::size_t>> labels = {
+        {"mean speed", 5},     {"rms speed", 6},     {"pressure", 7},
+        {"Z bulk", 10},        {"  eta inside", 11}, {"collision rate", 12},
+        {"mean free path", 13}};
     const int now_column = 18, average_column = 28, theory_column = 50;
     for (const auto& [f, k] :
          {std::pair{&small, &small_kinetic}, std::pair{&big, &big_kinetic}}) {
@@ -43,26 +45,34 @@ TEST_SUITE("kinetic-theory") {
       gas::draw_kinetic_figures(screen, *f, *k);
       CHECK(screen.lines[1].substr(2, 2) == "T ");
       CHECK(screen.lines[2].substr(2, 2) == "N ");
-      CHECK(screen.lines[3].substr(now_column, 3) == "now");
-      CHECK(screen.lines[3].substr(average_column, 7) == "average");
-      CHECK(screen.lines[3].substr(theory_column, 6) == "theory");
-      for (std::size_t i = 0; i < labels.size(); ++i) {
-        CAPTURE(labels[i]);
-        const std::string& line = screen.lines[4 + i];  // one a row, from row 4
-        CHECK(line.substr(2, labels[i].size()) == labels[i]);
+      CHECK(screen.lines[3].substr(2, 2) == "H ");
+      CHECK(screen.lines[4].substr(now_column, 3) == "now");
+      CHECK(screen.lines[4].substr(average_column, 7) == "average");
+      CHECK(screen.lines[4].substr(theory_column, 6) == "theory");
+      for (const auto& [label, row] : labels) {
+        CAPTURE(label);
+        const std::string& line = screen.lines[row];
+        CHECK(line.substr(2, label.size()) == label);
         CHECK(line[1] == ' ');
         CHECK(line[theory_column - 1] == ' ');
         CHECK(line[theory_column] != ' ');  // a number, or "-" when not known
       }
-      CHECK(screen.lines[4][now_column] != ' ');  // the mean speed now
+      // The rows of two averages side by side: in the average and theory columns.
+      CHECK(screen.lines[8].substr(2, 7) == "  Px, P");
+      CHECK(screen.lines[9].substr(2, 12) == "Z box: walls");
+      for (const std::size_t row : {8, 9}) {
+        CHECK(screen.lines[row][average_column] != ' ');
+        CHECK(screen.lines[row][theory_column] != ' ');
+      }
+      CHECK(screen.lines[5][now_column] != ' ');  // the mean speed now
       // The values read back: T with 6 decimals (so within 5e-7).
       CHECK(std::abs(std::stod(screen.lines[1].substr(4)) - f->time) <= 5e-7);
     }
     // The average with its error, in its column.
     TextScreen screen = gas::prepare_character_screen(80, 22);
     gas::draw_kinetic_figures(screen, big, big_kinetic);
-    CHECK(screen.lines[7].substr(average_column, 21) == "2.0625 +- 0.013      ");
-    CHECK(screen.lines[7].substr(theory_column, 7) == "2.0638 ");
+    CHECK(screen.lines[10].substr(average_column, 21) == "2.0625 +- 0.013      ");
+    CHECK(screen.lines[10].substr(theory_column, 7) == "2.0638 ");
   }
 
   TEST_CASE(
@@ -72,7 +82,7 @@ TEST_SUITE("kinetic-theory") {
     gas::draw_kinetic_figures(screen, gas::testing::some_figures(),
                               gas::KineticFigures{});
     CHECK(screen.lines[1].substr(0, 14) == "| T 12.500000 ");
-    CHECK(screen.lines[4].substr(0, 12) == "| mean speed");
+    CHECK(screen.lines[5].substr(0, 12) == "| mean speed");
     for (const std::string& line : screen.lines) {
       CHECK(line.size() == 20);
       CHECK((line.back() == '|' || line.back() == '+'));
@@ -89,10 +99,11 @@ TEST_SUITE("kinetic-theory") {
     gas::KineticFigures f;
     f.theory.kT = 1;
     f.theory.mean_speed = std::sqrt(3.14159265358979 / 2);
-    f.bin_width = 0.25;
+    f.measured.bin_width = 0.25;
     for (int b = 0; b < 14; ++b) {
-      f.speed_fractions.push_back(gas::maxwell_fraction_below(0.25 * (b + 1), 1) -
-                                  gas::maxwell_fraction_below(0.25 * b, 1));
+      f.measured.speed_fractions.push_back(
+          gas::maxwell_fraction_below(0.25 * (b + 1), 1) -
+          gas::maxwell_fraction_below(0.25 * b, 1));
     }
     TextScreen screen = gas::prepare_character_screen(32, 14);  // 28 columns: 2 a bin
     gas::draw_histogram(screen, f, 1, 12);
@@ -115,7 +126,7 @@ TEST_SUITE("kinetic-theory") {
                           [static_cast<std::size_t>(column)] == '#');
     }
     // A spike beyond the scale is cut with '^'.
-    f.speed_fractions[4] = 0.9;
+    f.measured.speed_fractions[4] = 0.9;
     gas::draw_histogram(screen, f, 1, 12);
     CHECK(screen.lines[2][10] == '^');
   }
@@ -131,16 +142,17 @@ TEST_SUITE("kinetic-theory") {
     f.time = 37.0 / 3;  // numbers that need all 17 digits
     f.display_step = 0.1;
     gas::KineticFigures k;
-    k.compressibility = {2.0 / 3, 1.0 / 7};
-    k.theory.compressibility = 1.0 / 9;
+    k.measured.bulk_z = {2.0 / 3, 1.0 / 7};
+    k.bulk_z_theory = 1.0 / 9;
+    k.measured.h_now = 1.0 / 11;
     const std::string row = gas::csv_row(f, k);
     std::vector<std::string> fields, names;
     std::stringstream stream(row);
     for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
     std::stringstream header(gas::csv_header());
     for (std::string name; std::getline(header, name, ',');) names.push_back(name);
-    REQUIRE(fields.size() == 24);
-    REQUIRE(names.size() == 24);
+    REQUIRE(fields.size() == 37);
+    REQUIRE(names.size() == 37);
     auto same = [](const std::string& text, double value) {
       return std::bit_cast<std::uint64_t>(std::strtod(text.c_str(), nullptr)) ==
              std::bit_cast<std::uint64_t>(value);
@@ -154,11 +166,44 @@ TEST_SUITE("kinetic-theory") {
     CHECK(same(fields[6], f.energy_drift));
     CHECK(same(fields[7], f.momentum.x));
     CHECK(same(fields[8], f.momentum.y));
-    CHECK(names[16] == "Z");
-    CHECK(same(fields[16], k.compressibility.value));
-    CHECK(same(fields[17], k.compressibility.error));
-    CHECK(same(fields[18], k.theory.compressibility));
+    CHECK(names[20] == "Z");
+    CHECK(names[21] == "Z_error");
+    CHECK(names[22] == "Z_theory");
+    CHECK(same(fields[20], k.measured.bulk_z.value));
+    CHECK(same(fields[21], k.measured.bulk_z.error));
+    CHECK(same(fields[22], k.bulk_z_theory));
+    CHECK(names[35] == "H");
+    CHECK(same(fields[35], k.measured.h_now));
     CHECK(fields[13] == "nan");  // not measured yet
+  }
+
+  TEST_CASE("the key A restarts the averages at once and the CSV says since when") {
+    // The kinetic scene (200 balls): the warm-up of 5 collisions a ball ends
+    // near T = 13; A pressed before the step to T = 21 restarts the averages
+    // at T = 20, and they go on from there.
+    const gas::testing::Scratch scratch;
+    const std::string csv = scratch.file("c.csv");
+    const auto run = gas::testing::run_program({"data/kinetic.scene", "--mode", "none",
+                                                "--until", "30", "--csv", csv, "--keys",
+                                                std::string(20, '.') + "A"});
+    REQUIRE(run.status == 0);
+    std::vector<std::vector<std::string>> rows;
+    std::stringstream lines(gas::testing::read_file(csv));
+    for (std::string line; std::getline(lines, line);) {
+      std::vector<std::string> fields;
+      std::stringstream stream(line);
+      for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+      rows.push_back(fields);
+    }
+    REQUIRE(rows.size() == 31);  // the header and T = 1 ... 30
+    const std::size_t since = rows[0].size() - 1;
+    REQUIRE(rows[0][since] == "averages_since");
+    CHECK(rows[1][since] == "nan");                    // T = 1: warming up
+    const double warmed = std::stod(rows[20][since]);  // T = 20
+    CHECK(warmed > 5);
+    CHECK(warmed < 20);
+    CHECK(rows[21][since] == "20");  // restarted before the step to T = 21
+    CHECK(rows[30][since] == "20");
   }
 
 }  // TEST_SUITE

@@ -27,7 +27,12 @@
 #include <random>
 #include <vector>
 
+#include "beyond/boltzmann_h.hpp"
+#include "beyond/display_steps.hpp"
+#include "beyond/gas_statistics.hpp"
+#include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
+#include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "stage7_control.hpp"
 
@@ -71,40 +76,40 @@ struct ObservedRun {
   explicit ObservedRun(Gas g) : control(gas::start_control_for(std::move(g))) {}
   ObservedRun(const ObservedRun&) = delete;
   ObservedRun& operator=(const ObservedRun&) = delete;
-  GasStatistics& start_statistics(int bins) {
-    statistics.emplace(control.gas, bins);
+  GasStatistics& start_statistics(int bins, bool warm_up = true) {
+    statistics.emplace(control.gas, bins, warm_up);
     control.observer = &*statistics;
     return *statistics;
   }
 };
 
+// Runs the gas to `time` with no picture on the way (the statistics need
+// none: they hear of every collision through the hook).
 void run_until(Control& control, double time) {
-  while (control.gas.time < time) gas::take_step(control, time, nullptr);
+  while (control.gas.time < time) gas::take_display_step(control, time, nullptr);
 }
 
-// The measured figures of one run: warm up, then measure for `length` time
-// units.
+// What one run measured, after the statistics' own warm-up, over `length`
+// time units: a side x side lattice at area fraction eta.
 struct Measured {
   double kT = 0;
-  Average z, rate;
+  gas::MeasuredFigures m;
   double z_from_rate = 0, z_from_rate_error = 0;  // the contact relation
 };
 
-Measured measure_run(int side, double eta, double warm_up, double length, unsigned seed) {
+Measured measure_run(int side, double eta, double length, unsigned seed) {
   ObservedRun run(lattice_gas(side, eta, seed));
   Control& control = run.control;
-  run_until(control, warm_up);
   const GasStatistics& statistics = run.start_statistics(10);
-  run_until(control, warm_up + length);
-  Measured m;
-  m.kT = gas::kinetic_energy(control.gas) / (side * side);
-  m.z = statistics.compressibility_at(control.gas.time);
-  m.rate = statistics.collision_rate_at(control.gas.time);
+  run_until(control, length);
+  Measured r;
+  r.kT = gas::kinetic_energy(control.gas) / (side * side);
+  r.m = statistics.measured(control.gas);
   // Contact relation (lesson 11): Z - 1 = rate * s * sqrt(pi m / kT) / 4.
-  const double factor = 2 * control.gas.radius * std::sqrt(pi / m.kT) / 4;
-  m.z_from_rate = 1 + factor * m.rate.value;
-  m.z_from_rate_error = factor * m.rate.error;
-  return m;
+  const double factor = 2 * control.gas.radius * std::sqrt(pi / r.kT) / 4;
+  r.z_from_rate = 1 + factor * r.m.collision_rate.value;
+  r.z_from_rate_error = factor * r.m.collision_rate.error;
+  return r;
 }
 
 // The Kolmogorov-Smirnov distance between the speeds and 2D Maxwell-
@@ -120,39 +125,42 @@ double ks_distance(std::vector<double> speeds, double kT) {
   return d;
 }
 
-// Henderson's formula is within about 0.5 % of the simulated hard-disc fluid
-// up to eta = 0.5 (Henderson 1975; Kolafa and Rottner, Mol. Phys. 104, 3435
-// (2006) for accurate values), which the comparisons allow for.
-constexpr double henderson_accuracy = 0.005;
-
-void check_equation_of_state(double eta, double length) {
-  // N = 100 and N = 400 at the same area fraction, with the same length of
-  // run. The walls raise Z above the bulk value by an amount proportional to
-  // the walls' length over the area, ~ 1 / sqrt(N) (lesson 11 measures it at
-  // N = 100, 400, 1600), so Z(inf) = Z(400) - (Z(100) - Z(400)) = 2 Z(400) -
-  // Z(100), with error sqrt(4 e400^2 + e100^2) from the block errors.
-  const Measured small = measure_run(10, eta, 30, length, 7);
-  const Measured large = measure_run(20, eta, 30, length, 8);
-  const double henderson = gas::henderson_compressibility(eta);
-  const double extrapolated = 2 * large.z.value - small.z.value;
-  const double error = std::hypot(2 * large.z.error, small.z.error);
+// The equation of state of the bulk, measured in the interior of a box of
+// 1024 balls, against the reference at the interior's own density; the box's
+// own Z from its walls and from its collisions, which must agree; and the
+// interior denser than the box on average (the walls thin the gas beside
+// them). `length`: time units for about 10^6 collisions.
+void check_equation_of_state(double eta, double length, unsigned seed) {
+  const Measured r = measure_run(32, eta, length, seed);
+  const gas::MeasuredFigures& m = r.m;
+  const double eta_inside = m.interior_area_fraction.value;
+  const double reference = gas::hard_disc_fluid_compressibility(eta_inside);
   CAPTURE(eta);
-  CAPTURE(small.z.value);
-  CAPTURE(small.z.error);
-  CAPTURE(large.z.value);
-  CAPTURE(large.z.error);
-  CAPTURE(extrapolated);
-  CAPTURE(henderson);
-  REQUIRE(std::isfinite(error));
-  // Three standard errors, plus Henderson's own accuracy.
-  CHECK(std::abs(extrapolated - henderson) <= 3 * error + henderson_accuracy * henderson);
-  // The contact relation holds at each size, walls and all (lesson 11): the
-  // two estimates come from the same run, so within three errors of either.
-  for (const Measured* m : {&small, &large}) {
-    CAPTURE(m->z_from_rate);
-    CHECK(std::abs(m->z.value - m->z_from_rate) <=
-          3 * std::hypot(m->z.error, m->z_from_rate_error));
-  }
+  CAPTURE(eta_inside);
+  CAPTURE(m.bulk_z.value);
+  CAPTURE(m.bulk_z.error);
+  CAPTURE(reference);
+  CAPTURE(m.box_z_walls.value);
+  CAPTURE(m.box_z_walls.error);
+  CAPTURE(m.box_z_virial.value);
+  CAPTURE(m.box_z_virial.error);
+  // The bulk: three standard errors of the reference (whose own accuracy,
+  // 0.1 %, is far below them here), and the error a real one, under 1 %.
+  REQUIRE(std::isfinite(m.bulk_z.error));
+  CHECK(m.bulk_z.error < 0.01 * reference);
+  CHECK(std::abs(m.bulk_z.value - reference) <= 3 * m.bulk_z.error);
+  // The box: walls and collisions give the same Z (the virial theorem for
+  // the box), within three errors of their difference (the two are from one
+  // run, so this is conservative).
+  REQUIRE(std::isfinite(m.box_z_walls.error));
+  REQUIRE(std::isfinite(m.box_z_virial.error));
+  CHECK(std::abs(m.box_z_walls.value - m.box_z_virial.value) <=
+        3 * std::hypot(m.box_z_walls.error, m.box_z_virial.error));
+  // The contact relation holds for the box, walls and all (lesson 11).
+  CHECK(std::abs(m.box_z_virial.value - r.z_from_rate) <=
+        3 * std::hypot(m.box_z_virial.error, r.z_from_rate_error));
+  // The interior is denser than N / A: beside each wall the gas is thinner.
+  CHECK(eta_inside > eta);
 }
 
 }  // namespace
@@ -183,8 +191,8 @@ TEST_SUITE("kinetic-theory") {
             doctest::Approx(1 + 2 * eta * gas::henderson_contact_value(eta)));
     }
     CHECK(gas::henderson_compressibility(0.5) == 4.125);
-    // A hand-made gas: Enskog's rate through the contact relation gives
-    // Henderson's Z again, and the mean free path is 1 / (2 sqrt 2 s n g).
+    // A hand-made gas: Enskog's rate through the contact relation gives the
+    // reference Z again, and the mean free path is 1 / (2 sqrt 2 s n g).
     Gas g;
     g.radius = 2;
     g.width = 100;
@@ -198,7 +206,9 @@ TEST_SUITE("kinetic-theory") {
           doctest::Approx(t.compressibility));
     CHECK(t.mean_free_path ==
           doctest::Approx(1 / (2 * std::sqrt(2.0) * s * n * t.contact_value)));
-    CHECK(t.pressure == doctest::Approx(t.compressibility * 3 * t.kT / (96.0 * 56.0)));
+    // The bulk's Z at the gas's eta: the reference, with Henderson's beside it.
+    CHECK(t.compressibility == gas::hard_disc_fluid_compressibility(t.area_fraction));
+    CHECK(t.henderson == gas::henderson_compressibility(t.area_fraction));
   }
 
   TEST_CASE("one ball: the push on the walls gives P times the centres' area = N kT") {
@@ -215,13 +225,17 @@ TEST_SUITE("kinetic-theory") {
     g.balls = {{10, 10, 3, 4, 0}};
     ObservedRun run(g);
     Control& control = run.control;
-    const GasStatistics& statistics = run.start_statistics(10);
+    const GasStatistics& statistics = run.start_statistics(10, false);
     run_until(control, 532);
-    CHECK(statistics.compressibility_at(532).value == doctest::Approx(1).epsilon(1e-12));
-    CHECK(statistics.pressure_at(532).value ==
-          doctest::Approx(12.5 / (38.0 * 28.0)).epsilon(1e-12));
-    CHECK(statistics.collision_rate_at(532).value == 0);
-    CHECK(statistics.mean_speed_at(532).value == doctest::Approx(5));
+    const gas::MeasuredFigures m = statistics.measured(control.gas);
+    CHECK(m.box_z_walls.value == doctest::Approx(1).epsilon(1e-12));
+    CHECK(m.box_z_virial.value == 1);  // no collision of two balls
+    CHECK(m.pressure.value == doctest::Approx(12.5 / (38.0 * 28.0)).epsilon(1e-12));
+    // Each direction alone: 2 |v| per bounce, one bounce every 2 L / |v|.
+    CHECK(m.pressure_x.value == doctest::Approx(9.0 / 38 / 28).epsilon(1e-12));
+    CHECK(m.pressure_y.value == doctest::Approx(16.0 / 38 / 28).epsilon(1e-12));
+    CHECK(m.collision_rate.value == 0);
+    CHECK(m.mean_speed.value == doctest::Approx(5));
   }
 
   TEST_CASE("a gas started at one speed relaxes to the 2D Maxwell-Boltzmann speeds") {
@@ -278,48 +292,99 @@ TEST_SUITE("kinetic-theory") {
     run_until(control, 30);
     const GasStatistics& statistics = run.start_statistics(10);
     run_until(control, 630);
-    const Average mean = statistics.mean_speed_at(630);
+    const gas::MeasuredFigures m = statistics.measured(control.gas);
+    const Average mean = m.mean_speed;
     const gas::KineticTheory theory = gas::kinetic_theory(control.gas);
     CAPTURE(mean.value);
     CAPTURE(mean.error);
     REQUIRE(std::isfinite(mean.error));
     CHECK(std::abs(mean.value - theory.mean_speed) <= 3 * mean.error);
     // The histogram's fractions and the fraction beyond make the whole.
-    double sum = statistics.fraction_beyond_at(630);
-    for (const double f : statistics.speed_fractions_at(630)) sum += f;
+    double sum = m.fraction_beyond;
+    for (const double f : m.speed_fractions) sum += f;
     CHECK(sum == doctest::Approx(1));
   }
 
-  // Run lengths: the Z errors they give (from the block averages) are about
-  // 0.3 % of Z, against gaps from the walls of 1 to 3 % at N = 100.
-  TEST_CASE("the equation of state at area fraction 0.1") {
-    check_equation_of_state(0.1, 3000);
+  // Run lengths: about 10^6 collisions each (some 2000 collisions a ball).
+  TEST_CASE("the equation of state of the bulk at area fraction 0.1") {
+    check_equation_of_state(0.1, 6000, 7);
   }
-  TEST_CASE("the equation of state at area fraction 0.3") {
-    check_equation_of_state(0.3, 1200);
+  TEST_CASE("the equation of state of the bulk at area fraction 0.3") {
+    check_equation_of_state(0.3, 2400, 8);
   }
-  TEST_CASE("the equation of state at area fraction 0.5") {
-    check_equation_of_state(0.5, 1000);
+  TEST_CASE("the equation of state of the bulk at area fraction 0.5") {
+    check_equation_of_state(0.5, 800, 9);
   }
 
-  TEST_CASE("the walls' excess pressure shrinks as the walls' share of the gas") {
-    // At area fraction 0.5 the wall correction is large enough to measure:
-    // Z(100) - Z_H ~ 0.125 and Z(400) - Z_H ~ 0.06 (lesson 11). Both are
-    // positive and the larger gas's is smaller, each beyond three errors;
-    // their ratio is near 2 = sqrt(400 / 100), within four errors of it.
-    const Measured small = measure_run(10, 0.5, 30, 1000, 11);
-    const Measured large = measure_run(20, 0.5, 30, 1000, 12);
-    const double henderson = gas::henderson_compressibility(0.5);
-    const double gap_small = small.z.value - henderson,
-                 gap_large = large.z.value - henderson;
-    CAPTURE(gap_small);
-    CAPTURE(gap_large);
-    CHECK(gap_large > 3 * large.z.error);
-    CHECK(gap_small - gap_large > 3 * std::hypot(small.z.error, large.z.error));
-    const double ratio = gap_small / gap_large;
-    const double ratio_error =
-        ratio * std::hypot(small.z.error / gap_small, large.z.error / gap_large);
-    CAPTURE(ratio);
-    CHECK(std::abs(ratio - 2) <= 4 * ratio_error);
+  TEST_CASE(
+      "the H-theorem: H falls and after B it climbs back until the precision "
+      "horizon") {
+    // data/h-theorem.scene: 1024 balls on a lattice at area fraction 0.3,
+    // every speed 1. H of the speeds now (38 bins, as on an 80-column
+    // screen; bins chosen so that speed 1 is not on a bin's edge) measured at
+    // T = 1, 2, 4, 8: it falls to the noise of 1024 speeds in 38 bins
+    // (bins / 2N = 0.019, boltzmann_h_noise_floor) within about 6 collisions
+    // a ball (T = 8).
+    const gas::Gas start = gas::read_scene_file(GAS_SOURCE_DIR "/data/h-theorem.scene");
+    auto h_after = [&](double forward, double back, double* retrace_error) {
+      ObservedRun run(start);
+      const GasStatistics& statistics = run.start_statistics(38, false);
+      run_until(run.control, forward);
+      gas::press_key(run.control, 'B');
+      run_until(run.control, forward + back);
+      // How far the balls are from their start, in radii (when back = forward).
+      *retrace_error = 0;
+      for (std::size_t i = 0; i < start.balls.size(); ++i) {
+        const gas::Point p = gas::centre_at(run.control.gas.balls[i], forward + back);
+        *retrace_error = std::max(
+            *retrace_error, std::hypot(p.x - start.balls[i].x, p.y - start.balls[i].y));
+      }
+      return statistics.measured(run.control.gas).h_now;
+    };
+    ObservedRun run(start);
+    const GasStatistics& statistics = run.start_statistics(38, false);
+    const double h0 = statistics.measured(run.control.gas).h_now;
+    CAPTURE(h0);
+    CHECK(h0 > 3);                  // every ball in one bin: H = -ln q of that bin, 3.05
+    std::vector<double> forward_h;  // at T = 1, 2, 4, 8
+    double last = h0;
+    for (const double t : {1.0, 2.0, 4.0, 8.0}) {
+      run_until(run.control, t);
+      forward_h.push_back(statistics.measured(run.control.gas).h_now);
+      CAPTURE(t);
+      CAPTURE(forward_h.back());
+      CHECK(forward_h.back() < last);  // falls
+      last = forward_h.back();
+    }
+    CHECK(last < 2 * gas::boltzmann_h_noise_floor(38, 1024));
+
+    // B at T = 10 (8 collisions a ball): the gas retraces its path, and H
+    // with it: at T = 10 + s it is H(10 - s), for s = 2, 6, 8, 9, so it
+    // climbs, and at T = 20 the gas is back at its start with H(0).
+    double error = 0;
+    const std::vector<double> back_h = {h_after(10, 2, &error), h_after(10, 6, &error),
+                                        h_after(10, 8, &error), h_after(10, 9, &error)};
+    for (std::size_t i = 0; i < back_h.size(); ++i) {
+      CAPTURE(i);
+      // The speeds at 10 + s and 10 - s differ by round-off (some 1e-12 by
+      // T = 20, below) and each bin's share is a count: H is the same
+      // unless a speed sits within 1e-12 of a bin's edge, which none does.
+      CHECK(std::abs(back_h[i] - forward_h[3 - i]) < 1e-9);
+      if (i > 0) CHECK(back_h[i] > back_h[i - 1]);  // climbs
+    }
+    CHECK(std::abs(h_after(10, 10, &error) - h0) < 1e-9);  // every speed 1 again
+    CHECK(error < 1e-6);
+    // In double the retrace holds to about 20 collisions a ball (B at T = 24:
+    // back within 0.01 radii), and not after 25 (B at T = 30: the round-off
+    // of 2^-53, multiplied by some 3.5 at each collision of a ball, has grown
+    // to the size of a ball, and H climbs only half way).
+    const double h_24 = h_after(24, 24, &error);
+    CAPTURE(error);
+    CHECK(error < 0.01);
+    CHECK(std::abs(h_24 - h0) < 1e-3);
+    const double h_30 = h_after(30, 30, &error);
+    CAPTURE(h_30);
+    CHECK(error > 1);
+    CHECK(h_30 < 0.6 * h0);
   }
 }

@@ -12,6 +12,7 @@ namespace {
 constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
+// [anchor: boltzmann-h]
 double boltzmann_h(std::span<const double> fractions, double fraction_beyond,
                    double bin_width, double kT) {
   if (!(kT > 0) || !(bin_width > 0) || !(fraction_beyond >= 0)) return unknown;
@@ -39,6 +40,7 @@ double boltzmann_h(std::span<const double> fractions, double fraction_beyond,
   // H would be a mistake in the q_i, and is left for the tests to see.
   return (h < 0 && h > -1e-12) ? 0 : h;
 }
+// [/anchor: boltzmann-h]
 
 double boltzmann_h_of_speeds(std::span<const double> speeds, std::size_t bins,
                              double bin_width) {

@@ -78,6 +78,7 @@ std::span<const FluidTerm> hard_disc_fluid_terms() {
   return kolafa_rottner;
 }
 
+// [anchor: reference-eos]
 double hard_disc_fluid_compressibility(double area_fraction) {
   if (!in_fluid_range(area_fraction)) return unknown;
   const double x = area_fraction / (1 - area_fraction);
@@ -87,6 +88,7 @@ double hard_disc_fluid_compressibility(double area_fraction) {
   }
   return z;
 }
+// [/anchor: reference-eos]
 
 double hard_disc_fluid_compressibility_slope(double area_fraction) {
   if (!in_fluid_range(area_fraction)) return unknown;

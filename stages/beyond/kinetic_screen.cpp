@@ -5,26 +5,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <numbers>
+
+#include "beyond/hard_disc_fluid.hpp"
 
 namespace gas {
 
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) {
   KineticFigures k;
-  k.rms_speed =
-      gas.balls.empty()
-          ? 0.0
-          : std::sqrt(2 * kinetic_energy(gas) / static_cast<double>(gas.balls.size()));
+  const auto n = static_cast<double>(gas.balls.size());
+  k.rms_speed = gas.balls.empty() ? 0.0 : std::sqrt(2 * kinetic_energy(gas) / n);
   k.theory = kinetic_theory(gas);
-  k.average_mean_speed = statistics.mean_speed_at(gas.time);
-  k.pressure = statistics.pressure_at(gas.time);
-  k.compressibility = statistics.compressibility_at(gas.time);
-  k.collision_rate = statistics.collision_rate_at(gas.time);
-  k.mean_free_path = k.collision_rate.value > 0
-                         ? k.average_mean_speed.value / k.collision_rate.value
+  k.measured = statistics.measured(gas);
+  const MeasuredFigures& m = k.measured;
+  // The bulk: the reference at the interior's own density (like with like).
+  const double eta = m.interior_area_fraction.value;
+  k.bulk_z_theory = hard_disc_fluid_compressibility(eta);
+  k.bulk_z_henderson = henderson_compressibility(eta);
+  const double interior_density = eta / (std::numbers::pi * gas.radius * gas.radius);
+  k.pressure_theory = k.bulk_z_theory * interior_density * k.theory.kT;
+  k.mean_free_path = m.collision_rate.value > 0
+                         ? m.mean_speed.value / m.collision_rate.value
                          : not_known;
-  k.speed_fractions = statistics.speed_fractions_at(gas.time);
-  k.bin_width = statistics.bin_width();
-  k.fraction_beyond = statistics.fraction_beyond_at(gas.time);
   return k;
 }
 
@@ -54,20 +57,21 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
                     int last_row) {
   const int bar_rows = last_row - first_row - 1;  // less the title and the axis
   const int width = screen.columns - 4;           // columns 2 ... columns - 3
-  const auto bins = static_cast<int>(k.speed_fractions.size());
+  const MeasuredFigures& m = k.measured;
+  const auto bins = static_cast<int>(m.speed_fractions.size());
   const double kT = k.theory.kT;
-  if (bar_rows < 2 || width < 4 || bins == 0 || !(kT > 0) || !(k.bin_width > 0)) return;
+  if (bar_rows < 2 || width < 4 || bins == 0 || !(kT > 0) || !(m.bin_width > 0)) return;
   // Merge neighbouring bins when there are more bins than columns; spread a
   // bin over `span` columns when there are fewer.
   const int merge = (bins + width - 1) / width;
   const int shown_bins = bins / merge;
   const int span = std::max(1, width / shown_bins);
-  const double width_shown = merge * k.bin_width;
+  const double width_shown = merge * m.bin_width;
   std::vector<double> measured(static_cast<std::size_t>(shown_bins), 0.0);
   std::vector<double> expected(static_cast<std::size_t>(shown_bins), 0.0);
   for (int b = 0; b < shown_bins; ++b) {
-    for (int m = 0; m < merge; ++m)
-      measured[b] += k.speed_fractions[static_cast<std::size_t>(b * merge + m)];
+    for (int j = 0; j < merge; ++j)
+      measured[b] += m.speed_fractions[static_cast<std::size_t>(b * merge + j)];
     expected[b] = maxwell_fraction_below((b + 1) * width_shown, kT) -
                   maxwell_fraction_below(b * width_shown, kT);
   }
@@ -78,7 +82,7 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
   };
   write_text(screen, first_row,
              fmt::format("speeds: # measured, * 2D Maxwell-Boltzmann; {:.2g}% faster",
-                         100 * k.fraction_beyond));
+                         100 * m.fraction_beyond));
   const int axis = last_row;
   for (int column = 2; column < 2 + shown_bins * span; ++column) {
     const auto b = static_cast<std::size_t>((column - 2) / span);
@@ -107,10 +111,11 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
 // [anchor: draw-kinetic-figures]
 void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k) {
   const KineticTheory& t = k.theory;
-  // Each measured figure beside the theory's: now, its average since the
-  // start with its error, and the prediction.
+  const MeasuredFigures& m = k.measured;
+  // Each measured figure beside the theory's: now, its average with its
+  // error, and the prediction.
   auto row = [](const char* label, const std::string& now, const std::string& average,
-                double theory, const char* source) {
+                double theory, const std::string& source) {
     return fmt::format("{:<16}{:<10}{:<22}{:<11}{}", label, now, average, shown(theory),
                        source);
   };
@@ -121,14 +126,25 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       fmt::format("N {}  eta {:.4f}  kT {:.5g}  drift {:+.1e}  momentum ({:.2g}, {:.2g})",
                   f.balls, t.area_fraction, t.kT, f.energy_drift, f.momentum.x,
                   f.momentum.y),
+      m.warming_up
+          ? fmt::format("H {:.4f}  warming up: averages start after {} "
+                        "collisions a ball",
+                        m.h_now, warm_up_collisions_per_ball)
+          : fmt::format("H {:.4f}  averages over T {:.6g} ... {:.6g} (A restarts)",
+                        m.h_now, m.since, m.since + m.duration),
       fmt::format("{:<16}{:<10}{:<22}{}", "", "now", "average +- error", "theory"),
-      row("mean speed", shown(f.mean_speed), shown(k.average_mean_speed), t.mean_speed,
+      row("mean speed", shown(f.mean_speed), shown(m.mean_speed), t.mean_speed,
           "Maxwell"),
       row("rms speed", shown(k.rms_speed), "", t.rms_speed, "(E fixed)"),
-      row("pressure", "", shown(k.pressure), t.pressure, "Henderson"),
-      row("Z = P Ac/(N kT)", "", shown(k.compressibility), t.compressibility,
-          "Henderson"),
-      row("collision rate", "", shown(k.collision_rate), t.collision_rate, "Enskog"),
+      row("pressure", "", shown(m.pressure), k.pressure_theory, "bulk, reference"),
+      fmt::format("{:<26}{:<22}{}", "  Px, Py (equal)", shown(m.pressure_x),
+                  shown(m.pressure_y)),
+      fmt::format("{:<26}{:<22}{}", "Z box: walls, virial", shown(m.box_z_walls),
+                  shown(m.box_z_virial)),
+      row("Z bulk", "", shown(m.bulk_z), k.bulk_z_theory,
+          fmt::format("Henderson {}", shown(k.bulk_z_henderson))),
+      row("  eta inside", "", shown(m.interior_area_fraction), t.area_fraction, "N/A"),
+      row("collision rate", "", shown(m.collision_rate), t.collision_rate, "Enskog"),
       row("mean free path", "", shown(k.mean_free_path), t.mean_free_path, "Enskog"),
   };
   draw_figures(screen, lines);  // stage 6: the lines at their places
@@ -141,23 +157,47 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
 std::string csv_header() {
   return "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"
          "kT,mean_speed_average,mean_speed_error,mean_speed_theory,"
-         "pressure,pressure_error,pressure_theory,Z,Z_error,Z_theory,"
+         "pressure,pressure_error,pressure_theory,pressure_x,pressure_x_error,"
+         "pressure_y,pressure_y_error,"
+         "Z,Z_error,Z_theory,Z_henderson,eta_interior,eta_interior_error,"
+         "Z_box_walls,Z_box_walls_error,Z_box_virial,Z_box_virial_error,"
          "collision_rate,collision_rate_error,collision_rate_theory,"
-         "mean_free_path,mean_free_path_theory";
+         "mean_free_path,mean_free_path_theory,H,averages_since";
 }
 
 std::string csv_row(const Figures& f, const KineticFigures& k) {
   const KineticTheory& t = k.theory;
-  return fmt::format(
-      "{:.17g},{:.17g},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-      "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-      "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}",
-      f.time, f.display_step, f.wall_collisions, f.ball_collisions, f.mean_speed,
-      f.energy, f.energy_drift, f.momentum.x, f.momentum.y, t.kT,
-      k.average_mean_speed.value, k.average_mean_speed.error, t.mean_speed,
-      k.pressure.value, k.pressure.error, t.pressure, k.compressibility.value,
-      k.compressibility.error, t.compressibility, k.collision_rate.value,
-      k.collision_rate.error, t.collision_rate, k.mean_free_path, t.mean_free_path);
+  const MeasuredFigures& m = k.measured;
+  fmt::memory_buffer row;
+  auto add = [&row](double x) { fmt::format_to(std::back_inserter(row), ",{:.17g}", x); };
+  auto add_average = [&add](const Average& a) {
+    add(a.value);
+    add(a.error);
+  };
+  fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{},{}", f.time, f.display_step,
+                 f.wall_collisions, f.ball_collisions);
+  for (const double x :
+       {f.mean_speed, f.energy, f.energy_drift, f.momentum.x, f.momentum.y, t.kT})
+    add(x);
+  add_average(m.mean_speed);
+  add(t.mean_speed);
+  add_average(m.pressure);
+  add(k.pressure_theory);
+  add_average(m.pressure_x);
+  add_average(m.pressure_y);
+  add_average(m.bulk_z);
+  add(k.bulk_z_theory);
+  add(k.bulk_z_henderson);
+  add_average(m.interior_area_fraction);
+  add_average(m.box_z_walls);
+  add_average(m.box_z_virial);
+  add_average(m.collision_rate);
+  add(t.collision_rate);
+  add(k.mean_free_path);
+  add(t.mean_free_path);
+  add(m.h_now);
+  add(m.since);
+  return fmt::to_string(row);
 }
 
 }  // namespace gas

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "beyond/gas_statistics.hpp"
 #include "beyond/kinetic_theory.hpp"
 #include "stage1_data.hpp"
 #include "stage3_screen.hpp"
@@ -23,23 +24,21 @@
 
 namespace gas {
 
-// Kinetic theory's figures: what it predicts, and the time averages since the
-// start to set beside it.
+// Kinetic theory's figures: what it predicts, and the averages measured
+// since they started to set beside it, like with like: the box's own Z from
+// its walls and from its collisions, and the bulk's Z, from the interior,
+// against the reference at the interior's density.
 struct KineticFigures {
-  double rms_speed = 0;                 // sqrt(2 E / N), now
-  KineticTheory theory;                 // the predictions for this gas
-  Average average_mean_speed;           // the mean speed, averaged over time
-  Average pressure;                     // from the push on the walls
-  Average compressibility;              // Z = P (A1 - 2a)(A2 - 2a) / (N kT)
-  Average collision_rate;               // collisions of two balls per ball per time
+  double rms_speed = 0;      // sqrt(2 E / N), now
+  KineticTheory theory;      // the predictions for this gas, at eta = N pi a^2 / A
+  MeasuredFigures measured;  // the averages, the histogram, H
+  double bulk_z_theory = not_known;     // the reference Z at the interior's eta
+  double bulk_z_henderson = not_known;  // Henderson's at the same eta
+  double pressure_theory = not_known;   // the reference Z n_int kT: the bulk's pressure
   double mean_free_path = not_known;    // average mean speed / collision rate
-  std::vector<double> speed_fractions;  // the histogram (GasStatistics)
-  double bin_width = 0;                 // of its bins
-  double fraction_beyond = 0;           // faster than its last bin
 };
 
-// The predictions for `gas` and the averages and histogram of `statistics`,
-// up to the gas's time T.
+// The predictions for `gas` and what `statistics` measured, at the gas's T.
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics);
 
 // The statistics screen: the figures at fixed places inside the border, each

@@ -211,9 +211,11 @@ class ConsoleRun {
                                : fmt::format("{} (built in)", default_scene_name);
   }
 
-  // Carries out the keys in `keys`; false once E is pressed.
+  // Carries out the keys in `keys`; false once E is pressed. Beyond the
+  // article's keys, A restarts the statistics' averages (lesson 11).
   bool press_all(const std::string& keys) {
     for (const char key : keys) {
+      if ((key == 'A' || key == 'a') && statistics_) statistics_->restart(control_.gas);
       const KeyEffect effect = press_key(control_, key);
       if (effect == KeyEffect::end) return false;
       if (effect == KeyEffect::redraw) prepare_again();

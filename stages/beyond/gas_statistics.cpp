@@ -1,0 +1,272 @@
+// The measured side of the statistics screen. See beyond/gas_statistics.hpp
+// and lessons/11-kinetic-theory.md.
+#include "beyond/gas_statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "beyond/boltzmann_h.hpp"
+
+namespace gas {
+namespace {
+
+// Histogram range, in units of v_rms: the 2D Maxwell-Boltzmann fraction
+// beyond 2.5 v_rms is exp(-6.25) = 0.2 %.
+constexpr double histogram_range = 2.5;
+
+}  // namespace
+
+GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
+  return {duration - earlier.duration,
+          speed_time - earlier.speed_time,
+          push_x - earlier.push_x,
+          push_y - earlier.push_y,
+          virial - earlier.virial,
+          interior_virial - earlier.interior_virial,
+          interior_time - earlier.interior_time,
+          ball_collisions - earlier.ball_collisions};
+}
+
+GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up)
+    : balls_(gas.balls.size()),
+      radius_(gas.radius),
+      width_(gas.width - 2 * gas.radius),
+      height_(gas.height - 2 * gas.radius),
+      last_time_(gas.time) {
+  const auto n = static_cast<double>(balls_);
+  kT_ = balls_ > 0 ? kinetic_energy(gas) / n : 0.0;
+  // The interior: centres at least interior_margin_radii from every wall.
+  const double margin = interior_margin_radii * gas.radius;
+  interior_[0] = margin;
+  interior_[1] = gas.width - margin;
+  interior_[2] = margin;
+  interior_[3] = gas.height - margin;
+  interior_area_ = std::max(0.0, interior_[1] - interior_[0]) *
+                   std::max(0.0, interior_[3] - interior_[2]);
+  const int count = std::max(bins, 1);
+  bin_width_ = histogram_range * std::sqrt(2 * kT_) / count;
+  // One entry per bin and one for the speeds beyond the last.
+  bin_count_.assign(static_cast<std::size_t>(count) + 1, 0);
+  bin_time_.assign(bin_count_.size(), 0.0);
+  bin_since_.assign(bin_count_.size(), gas.time);
+  for (const Ball& ball : gas.balls) put_in(ball, gas.time);
+  // A sample for the error bars every N / 2 collisions: about one per ball.
+  collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_) / 2);
+  warm_up_until_ =
+      warm_up ? warm_up_collisions_per_ball * static_cast<long long>(balls_) : 0;
+  if (warm_up_until_ == 0) start_averages(gas);
+}
+
+int GasStatistics::bin_of(double speed) const {
+  const double bin = bin_width_ > 0 ? std::floor(speed / bin_width_) : 0.0;
+  return static_cast<int>(std::min(bin, static_cast<double>(bins())));
+}
+
+void GasStatistics::take_out(const Ball& ball, double time) {
+  const double speed = std::hypot(ball.vx, ball.vy);
+  speed_sum_ -= speed;
+  const auto b = static_cast<std::size_t>(bin_of(speed));
+  bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
+  bin_since_[b] = time;
+  --bin_count_[b];
+}
+
+void GasStatistics::put_in(const Ball& ball, double time) {
+  const double speed = std::hypot(ball.vx, ball.vy);
+  speed_sum_ += speed;
+  const auto b = static_cast<std::size_t>(bin_of(speed));
+  bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
+  bin_since_[b] = time;
+  ++bin_count_[b];
+}
+
+bool GasStatistics::in_interior(double x, double y) const {
+  return x >= interior_[0] && x <= interior_[1] && y >= interior_[2] && y <= interior_[3];
+}
+
+// [anchor: interior-time]
+// How long the ball's present flight, from its row's moment SINCE (or the
+// start of the averages, if later) to `until`, keeps its centre inside the
+// interior: the straight line x + vx s, y + vy s cut by the interior's four
+// sides (for each axis the times between its two sides, then the overlap).
+double GasStatistics::interior_time_of(const Ball& ball, double until) const {
+  const double from = std::max(ball.since, start_);
+  if (!(until > from)) return 0;
+  double first = 0, last = until - from;  // s, from `from`
+  const double position[2] = {ball.x + ball.vx * (from - ball.since),
+                              ball.y + ball.vy * (from - ball.since)};
+  const double velocity[2] = {ball.vx, ball.vy};
+  for (int axis = 0; axis < 2; ++axis) {
+    const double low = interior_[2 * axis], high = interior_[2 * axis + 1];
+    if (velocity[axis] == 0) {
+      if (position[axis] < low || position[axis] > high) return 0;
+      continue;
+    }
+    double enter = (low - position[axis]) / velocity[axis];
+    double leave = (high - position[axis]) / velocity[axis];
+    if (enter > leave) std::swap(enter, leave);
+    first = std::max(first, enter);
+    last = std::min(last, leave);
+  }
+  return std::max(0.0, last - first);
+}
+// [/anchor: interior-time]
+
+// [anchor: collision-sums]
+void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
+  // The sums up to TC, with the speeds held until then.
+  const double t = c.time;
+  sums_.duration += t - last_time_;
+  sums_.speed_time += speed_sum_ * (t - last_time_);
+  last_time_ = t;
+  // A bounce reverses the velocity's component across the wall: the two
+  // walls of a pair, each (A2 - 2a) or (A1 - 2a) long for the centres,
+  // receive 2 |v_normal| (unit mass). A bounce keeps the speed.
+  const Ball& first = gas.balls[static_cast<std::size_t>(c.first - 1)];  // N1
+  if (c.kind == CollisionKind::vertical_wall && height_ > 0)
+    sums_.push_x += 2 * std::abs(first.vx) / (2 * height_);
+  if (c.kind == CollisionKind::horizontal_wall && width_ > 0)
+    sums_.push_y += 2 * std::abs(first.vy) / (2 * width_);
+  // The flights that end here, and the speeds that change.
+  sums_.interior_time += interior_time_of(first, t);
+  if (c.kind == CollisionKind::balls) {
+    const Ball& second = gas.balls[static_cast<std::size_t>(c.second - 1)];  // N2
+    sums_.interior_time += interior_time_of(second, t);
+    take_out(first, t);
+    take_out(second, t);
+    before_v_ = {first.vx, first.vy};
+  }
+}
+
+void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
+  if (c.kind == CollisionKind::balls) {
+    const Ball& p = gas.balls[static_cast<std::size_t>(c.first - 1)];
+    const Ball& q = gas.balls[static_cast<std::size_t>(c.second - 1)];
+    put_in(p, c.time);
+    put_in(q, c.time);
+    // The collision virial: the push one ball gave the other, dv of N1,
+    // along d = r1 - r2 at contact: d . dv = 2a |dv| (positive).
+    const double dx = p.x - q.x, dy = p.y - q.y;  // both written at TC
+    const double virial = dx * (p.vx - before_v_[0]) + dy * (p.vy - before_v_[1]);
+    sums_.virial += virial;
+    if (in_interior((p.x + q.x) / 2, (p.y + q.y) / 2)) sums_.interior_virial += virial;
+    ++sums_.ball_collisions;
+  }
+  // Every N collisions the sum of the speeds is added up afresh, so that the
+  // round-off of taking out and putting in never accumulates.
+  if (++collisions_ % static_cast<long long>(std::max<std::size_t>(balls_, 1)) == 0) {
+    speed_sum_ = 0;
+    for (const Ball& ball : gas.balls) speed_sum_ += std::hypot(ball.vx, ball.vy);
+  }
+  if (!averaging_) {
+    if (collisions_ >= warm_up_until_) start_averages(gas);
+    return;
+  }
+  // A sample for the error bars: each quantity over the last N / 2 collisions.
+  if (++sample_collisions_ < collisions_per_sample_) return;
+  const Sums now = sums_at(gas, c.time);
+  const Sums sample = now.minus(sample_start_);
+  sample_start_ = now;
+  sample_collisions_ = 0;
+  if (!(sample.duration > 0)) return;
+  for (int q = 0; q < quantity_count; ++q) {
+    const double value = value_of(static_cast<Quantity>(q), sample);
+    if (std::isfinite(value)) blocking_[static_cast<std::size_t>(q)].add(value);
+  }
+}
+// [/anchor: collision-sums]
+
+void GasStatistics::start_averages(const Gas& gas) {
+  averaging_ = true;
+  // Flights and the histogram count from now; the speeds held until now
+  // are forgotten.
+  start_ = last_time_ = gas.time;
+  sums_ = Sums{};
+  std::fill(bin_time_.begin(), bin_time_.end(), 0.0);
+  std::fill(bin_since_.begin(), bin_since_.end(), start_);
+  sample_start_ = Sums{};
+  sample_collisions_ = 0;
+  for (BlockingAnalysis& b : blocking_) b.clear();
+}
+
+void GasStatistics::restart(const Gas& gas) {
+  start_averages(gas);
+}
+
+GasStatistics::Sums GasStatistics::sums_at(const Gas& gas, double now) const {
+  Sums s = sums_;
+  s.duration += now - last_time_;
+  s.speed_time += speed_sum_ * (now - last_time_);
+  for (const Ball& ball : gas.balls) s.interior_time += interior_time_of(ball, now);
+  return s;
+}
+
+// [anchor: measured-quantities]
+double GasStatistics::value_of(Quantity q, const Sums& s) const {
+  const double n = static_cast<double>(balls_), t = s.duration;
+  const double pressure_x = s.push_x / t, pressure_y = s.push_y / t;
+  switch (q) {
+    case mean_speed_q:
+      return s.speed_time / (t * n);
+    case pressure_q:  // the two directions averaged
+      return (pressure_x + pressure_y) / 2;
+    case pressure_x_q:
+      return pressure_x;
+    case pressure_y_q:
+      return pressure_y;
+    case box_z_walls_q:  // P A_c / (N kT), A_c = (A1 - 2a)(A2 - 2a)
+      return (pressure_x + pressure_y) / 2 * width_ * height_ / (n * kT_);
+    case box_z_virial_q:  // P A_c = N kT + (sum of d . dv) / (2 t), in 2D
+      return 1 + s.virial / (2 * t * n * kT_);
+    case bulk_z_q:  // the same for the interior, N_int t = its ball-time
+      return 1 + s.interior_virial / (2 * kT_ * s.interior_time);
+    case interior_eta_q:  // n_int pi a^2
+      return s.interior_time / t / interior_area_ * std::numbers::pi * radius_ * radius_;
+    case collision_rate_q:
+      return 2 * static_cast<double>(s.ball_collisions) / (n * t);
+    case quantity_count:
+      break;
+  }
+  return not_known;
+}
+// [/anchor: measured-quantities]
+
+MeasuredFigures GasStatistics::measured(const Gas& gas) const {
+  MeasuredFigures m;
+  // H of the speeds now: from the histogram's counts.
+  std::vector<double> counts(bin_count_.begin(), bin_count_.end() - 1);
+  m.h_now = boltzmann_h(counts, static_cast<double>(bin_count_.back()), bin_width_, kT_);
+  m.speed_fractions.assign(static_cast<std::size_t>(bins()), 0.0);
+  m.bin_width = bin_width_;
+  m.warming_up = !averaging_;
+  if (!averaging_) return m;
+  const double now = gas.time;
+  const Sums s = sums_at(gas, now);
+  m.since = start_;
+  m.duration = s.duration;
+  if (!(s.duration > 0)) return m;
+  Average* averages[quantity_count] = {
+      &m.mean_speed,    &m.pressure,     &m.pressure_x, &m.pressure_y,
+      &m.box_z_walls,   &m.box_z_virial, &m.bulk_z,     &m.interior_area_fraction,
+      &m.collision_rate};
+  for (int q = 0; q < quantity_count; ++q) {
+    averages[q]->value = value_of(static_cast<Quantity>(q), s);
+    averages[q]->error = blocking_[static_cast<std::size_t>(q)].error();
+  }
+  // The histogram: the ball-time fraction of each bin, to now.
+  const double ball_time = s.duration * static_cast<double>(balls_);
+  for (std::size_t b = 0; b < bin_count_.size(); ++b) {
+    const double fraction =
+        (bin_time_[b] + static_cast<double>(bin_count_[b]) * (now - bin_since_[b])) /
+        ball_time;
+    if (b + 1 < bin_count_.size()) {
+      m.speed_fractions[b] = fraction;
+    } else {
+      m.fraction_beyond = fraction;
+    }
+  }
+  return m;
+}
+
+}  // namespace gas

@@ -1,0 +1,158 @@
+// The measured side of the statistics screen (beyond the article): time
+// averages of a running gas, with honest error bars.
+//
+// What this file does: keeps, collision by collision through stage 7's one
+// hook (CollisionObserver), the sums the statistics screen needs — the time
+// integral of the speeds, a histogram of speeds, the push on each pair of
+// walls, the collision virial of the whole box and of its interior, the time
+// the balls spend in the interior — and turns them into averages. A
+// collision costs a few operations whatever the number of balls; reading the
+// figures, and closing a sample for the error bars every N / 2 collisions,
+// walks the balls once. Nothing depends on when pictures are taken.
+// Article: "Gas on the display", stage 6, the third screen ("print some
+// properties of the gas, the mean speed for example"); all the rest is
+// beyond the article.
+// Lesson: lessons/11-kinetic-theory.md
+//
+// Assumptions: unit mass and k = 1 (kT = E / N); the energy is fixed (the
+// hook is the only way velocities change, besides B, which keeps speeds).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "beyond/blocking.hpp"
+#include "stage1_data.hpp"
+#include "stage4_first_collision.hpp"
+#include "stage7_control.hpp"
+
+namespace gas {
+
+inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
+
+// A time average and its statistical error (one standard error, from a
+// blocking analysis); the error is not known (NaN) until the analysis finds
+// it, the value not known before the averages start.
+struct Average {
+  double value = not_known;
+  double error = not_known;
+};
+
+// How many collisions of the start are left out of the averages, per ball:
+// a gas started on a lattice at one speed has relaxed after a few (lesson 11).
+inline constexpr long long warm_up_collisions_per_ball = 5;
+// The interior: centres at least this many radii from every wall. Density
+// oscillations at a wall die out within a few diameters (lesson 11).
+inline constexpr double interior_margin_radii = 8;
+
+// The figures measured since the averages started, as of one moment.
+struct MeasuredFigures {
+  bool warming_up = true;               // the first collisions, left out
+  double since = not_known;             // T at which the averages started
+  double duration = 0;                  // the time averaged over
+  Average mean_speed;                   // of the balls, over time
+  Average pressure;                     // on the walls: their push per time per length
+  Average pressure_x;                   // on the walls x = 0 and x = A1 alone
+  Average pressure_y;                   // on the walls y = 0 and y = A2 alone
+  Average box_z_walls;                  // Z of the box: P A_c / (N kT), from the walls
+  Average box_z_virial;                 // the same from the collision virial
+  Average bulk_z;                       // Z of the interior: P_int / (n_int kT)
+  Average interior_area_fraction;       // eta_int = n_int pi a^2, n_int over time
+  Average collision_rate;               // per ball: 2 (collisions of two balls) / (N t)
+  std::vector<double> speed_fractions;  // the histogram: ball-time fractions per bin
+  double bin_width = 0;                 // of its bins
+  double fraction_beyond = 0;           // faster than its last bin
+  double h_now = not_known;             // Boltzmann's H of the speeds now
+};
+
+class GasStatistics final : public CollisionObserver {
+ public:
+  // Speeds are counted in `bins` equal bins from 0 to 2.5 v_rms (v_rms of the
+  // gas as it is now; the energy does not change); faster ones apart. The
+  // averages start after warm_up_collisions_per_ball * N collisions of any
+  // kind from now (`warm_up` false: at once).
+  GasStatistics(const Gas& gas, int bins, bool warm_up = true);
+
+  // Stage 7's hook: before a collision the sums are brought up to TC and the
+  // colliding balls' old speeds and flights taken out; after it their new
+  // speeds go in, with the collision's virial.
+  void before_collision(const Gas& gas, const Collision& collision) override;
+  void after_collision(const Gas& gas, const Collision& collision) override;
+
+  // The averages start again now, with no warm-up (the key A).
+  void restart(const Gas& gas);
+
+  // The figures at the gas's time T (walks the balls once).
+  MeasuredFigures measured(const Gas& gas) const;
+
+  int bins() const { return static_cast<int>(bin_count_.size()) - 1; }
+  double bin_width() const { return bin_width_; }
+
+ private:
+  // The sums over a stretch of time.
+  struct Sums {
+    double duration = 0;
+    double speed_time = 0;       // integral over time of the sum of the speeds
+    double push_x = 0;           // 2 |vx| over K = 2, per unit of wall length
+    double push_y = 0;           // 2 |vy| over K = 1, per unit of wall length
+    double virial = 0;           // d . dv over K = 3 (d = r1 - r2 at contact)
+    double interior_virial = 0;  // the same, for contacts inside the interior
+    double interior_time = 0;    // ball-time spent inside the interior
+    long long ball_collisions = 0;
+    Sums minus(const Sums& earlier) const;
+  };
+  // The quantities averaged, each a function of a stretch's sums.
+  enum Quantity {
+    mean_speed_q,
+    pressure_q,
+    pressure_x_q,
+    pressure_y_q,
+    box_z_walls_q,
+    box_z_virial_q,
+    bulk_z_q,
+    interior_eta_q,
+    collision_rate_q,
+    quantity_count
+  };
+  double value_of(Quantity q, const Sums& s) const;
+
+  void start_averages(const Gas& gas);
+  Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress
+  int bin_of(double speed) const;                  // bins() for the faster ones
+  void take_out(const Ball& ball, double time);    // a ball's speed leaves the sums
+  void put_in(const Ball& ball, double time);      // and comes back, new
+  double interior_time_of(const Ball& ball, double until) const;  // of its flight
+  bool in_interior(double x, double y) const;
+
+  std::size_t balls_ = 0;
+  double kT_ = 0;
+  double radius_ = 0;
+  double width_ = 0, height_ = 0;  // A1 - 2a, A2 - 2a: the box the centres move in
+  double interior_[4] = {};        // x_min, x_max, y_min, y_max of the interior
+  double interior_area_ = 0;       // of the interior, for its centres
+  double bin_width_ = 0;
+  long long collisions_per_sample_ = 1;
+
+  // The state as of the last collision.
+  long long collisions_ = 0;     // since this object was made
+  long long warm_up_until_ = 0;  // the collision after which averages start
+  bool averaging_ = false;
+  double start_ = 0;                  // T when the averages started
+  double last_time_ = 0;              // the last collision's TC
+  double speed_sum_ = 0;              // the sum of the speeds since then
+  std::array<double, 2> before_v_{};  // N1's velocity before the collision
+  Sums sums_;                         // since the averages started
+  std::vector<long long> bin_count_;  // balls in each bin now, the last for beyond
+  std::vector<double> bin_time_;      // ball-time in each bin, up to bin_since_
+  std::vector<double> bin_since_;
+
+  // The error bars: a sample every collisions_per_sample_ collisions, each
+  // quantity's value over it fed to a blocking analysis.
+  Sums sample_start_;
+  long long sample_collisions_ = 0;
+  std::array<BlockingAnalysis, quantity_count> blocking_;
+};
+
+}  // namespace gas
