@@ -51,7 +51,7 @@ void check_same(const gas::Gas& read, const gas::Gas& written,
 }  // namespace
 
 TEST_SUITE("exercise-02") {
-  EXERCISE_TEST("exercise-02 a gas of one ball reads back") {
+  TEST_CASE("exercise-02 a gas of one ball reads back") {
     gas::Gas one;
     one.radius = 4;
     one.width = 256;
@@ -62,7 +62,7 @@ TEST_SUITE("exercise-02") {
     check_same(read, one, {{30, 40}});
   }
 
-  EXERCISE_TEST("exercise-02 every number comes back to the last bit") {
+  TEST_CASE("exercise-02 every number comes back to the last bit") {
     // Numbers that need up to 17 significant digits (1/3, pi, 20 and a bit):
     // 6 digits (printf's %g) or 6 decimals (std::to_string) change them.
     gas::Gas odd = gas::exercises::table({{1.0 / 3, 2.0 / 3, 0.1, -std::numbers::pi},
@@ -76,7 +76,7 @@ TEST_SUITE("exercise-02") {
                {{odd.balls[0].x, odd.balls[0].y}, {odd.balls[1].x, odd.balls[1].y}});
   }
 
-  EXERCISE_TEST("exercise-02 T and every row come back as they are, with since") {
+  TEST_CASE("exercise-02 T and every row come back as they are with since") {
     // T = 10. Ball 1's row was written at 4: (20, 15) is its centre at 4, at 10
     // it is at (29, 12). Ball 2's row was written at 10. A checkpoint keeps the
     // rows, not the centres at T (recomputing them rounds).
@@ -90,7 +90,7 @@ TEST_SUITE("exercise-02") {
     CHECK(read.balls[1].since == 10);
   }
 
-  EXERCISE_TEST("exercise-02 many balls come back in order and N is written") {
+  TEST_CASE("exercise-02 many balls come back in order and N is written") {
     std::vector<gas::Ball> grid;
     for (int row = 0; row < 4; ++row) {
       for (int column = 0; column < 6; ++column)

@@ -33,16 +33,14 @@ gas::TextScreen grid() {
 }  // namespace
 
 TEST_SUITE("exercise-03") {
-  EXERCISE_TEST(
-      "exercise-03 the bottom-left corner of the table is the bottom-left cell") {
+  TEST_CASE("exercise-03 the bottom-left corner of the table is the bottom-left cell") {
     const gas::TextScreen screen = grid();
     INFO("y grows upwards on the table but rows grow downwards on the screen");
     CHECK(screen.cell_of({0.5, 0.5}) == Cell{1, 5});
     CHECK(screen.cell_of({0, 0}) == Cell{1, 5});
   }
 
-  EXERCISE_TEST(
-      "exercise-03 columns count from x = 0 and rows from the top of the table") {
+  TEST_CASE("exercise-03 columns count from x = 0 and rows from the top of the table") {
     const gas::TextScreen screen = grid();
     CHECK(screen.cell_of({3, 1}) == Cell{2, 5});         // x in [2, 4): column 2
     CHECK(screen.cell_of({5, 9}) == Cell{3, 3});         // y in [8, 12): row 3
@@ -50,8 +48,7 @@ TEST_SUITE("exercise-03") {
     CHECK(screen.cell_of({11, 17}) == Cell{6, 1});
   }
 
-  EXERCISE_TEST(
-      "exercise-03 a point on a cell's left or lower edge belongs to that cell") {
+  TEST_CASE("exercise-03 a point on a cell's left or lower edge belongs to that cell") {
     const gas::TextScreen screen = grid();
     INFO("a cell holds its left and lower edges: column k holds 2(k-1) <= x < 2k");
     CHECK(screen.cell_of({4, 8}) == Cell{3, 3});
@@ -59,8 +56,7 @@ TEST_SUITE("exercise-03") {
     CHECK(screen.cell_of({18, 12}) == Cell{10, 2});
   }
 
-  EXERCISE_TEST(
-      "exercise-03 points on the far walls or beyond them stay inside the border") {
+  TEST_CASE("exercise-03 points on the far walls or beyond them stay inside the border") {
     const gas::TextScreen screen = grid();
     INFO("clamp the column to 1..columns-2 and the row to 1..rows-2");
     // The top-right corner of the table lies on the border's lines.
@@ -72,7 +68,7 @@ TEST_SUITE("exercise-03") {
     CHECK(screen.cell_of({-0.5, 10}) == Cell{1, 3});
   }
 
-  EXERCISE_TEST("exercise-03 the middle of every cell lies in that cell") {
+  TEST_CASE("exercise-03 the middle of every cell lies in that cell") {
     const gas::TextScreen screen = grid();
     // middle_of (stage 3, beside cell_of) goes the other way: from a cell to
     // the point at its middle.

@@ -44,7 +44,7 @@ void check(const Collision& got, double time, CollisionKind kind, int first, int
 }  // namespace
 
 TEST_SUITE("exercise-06") {
-  EXERCISE_TEST("exercise-06 one ball finds the wall it reaches first") {
+  TEST_CASE("exercise-06 one ball finds the wall it reaches first") {
     // From (10, 20): up to y = 29 in 9 / 3 = 3 (K = 1, a horizontal wall).
     check(first_of(table({{10, 20, 0, 3}})), 3, CollisionKind::horizontal_wall, 1, 0);
     // Left to x = 1 in 9 / 3 = 3 (K = 2, a vertical wall).
@@ -55,7 +55,7 @@ TEST_SUITE("exercise-06") {
     check(first_of(table({{10, 20, 0, 0}})), never, CollisionKind::none, 0, 0);
   }
 
-  EXERCISE_TEST("exercise-06 two balls that meet before any wall") {
+  TEST_CASE("exercise-06 two balls that meet before any wall") {
     // Ball 1 rests far away; balls 2 and 3 are 10 apart on the line y = 15
     // and close at 2: 2 apart at t = 4, before any wall (ball 3 reaches
     // x = 1 at 19).
@@ -66,7 +66,7 @@ TEST_SUITE("exercise-06") {
           CollisionKind::balls, 2, 3);
   }
 
-  EXERCISE_TEST("exercise-06 each ball flies on its own clock: since") {
+  TEST_CASE("exercise-06 each ball flies on its own clock: since") {
     INFO("time_to_wall counts from the moment the row was written: add ball.since");
     // T = 2.5. Ball 1's row was written at 2, at (10, 20), moving up at 3:
     // it reaches y = 29 at 2 + 9 / 3 = 5. Ball 2's row was written at 0, at
@@ -78,7 +78,7 @@ TEST_SUITE("exercise-06") {
           CollisionKind::horizontal_wall, 1, 0);
   }
 
-  EXERCISE_TEST("exercise-06 of events at the same moment the first one scanned wins") {
+  TEST_CASE("exercise-06 of events at the same moment the first one scanned wins") {
     INFO("replace the best so far only by a strictly earlier event: < not <=");
     // A ball into a corner: y = 29 and x = 39 both at 3; K = 1 is scanned first.
     check(first_of(table({{36, 26, 1, 1}})), 3, CollisionKind::horizontal_wall, 1, 0);
@@ -95,7 +95,7 @@ TEST_SUITE("exercise-06") {
           CollisionKind::balls, 1, 2);
   }
 
-  EXERCISE_TEST("exercise-06 TC is never earlier than the present time T") {
+  TEST_CASE("exercise-06 TC is never earlier than the present time T") {
     INFO("round-off can put an event a hair in the past: it is due now, TC = T");
     // A row written at 9, its centre 1e-7 short of x = 39 and moving right:
     // it reached its limit at 9.0000001, but T is already 10.

@@ -39,7 +39,7 @@ void check_centres(const std::vector<Point>& centres, const gas::Gas& gas, doubl
 }  // namespace
 
 TEST_SUITE("exercise-08") {
-  EXERCISE_TEST("exercise-08 the new centres are the centres at the new time") {
+  TEST_CASE("exercise-08 the new centres are the centres at the new time") {
     gas::Gas gas = three_balls();
     gas::Picture picture;
     picture.centres = gas::centres_at(gas, 2);
@@ -50,7 +50,7 @@ TEST_SUITE("exercise-08") {
     check_centres(picture.centres, gas, 3.5);
   }
 
-  EXERCISE_TEST("exercise-08 the old centres are the ones drawn last time (RS)") {
+  TEST_CASE("exercise-08 the old centres are the ones drawn last time (RS)") {
     gas::Gas gas = three_balls();
     gas::Picture picture;
     picture.centres = gas::centres_at(gas, 2);
@@ -64,7 +64,7 @@ TEST_SUITE("exercise-08") {
     check_centres(picture.centres, gas, 4.25);
   }
 
-  EXERCISE_TEST("exercise-08 the first picture has no past") {
+  TEST_CASE("exercise-08 the first picture has no past") {
     gas::Gas gas = three_balls();
     gas::Picture empty;  // no picture drawn yet: no centres at all
     gas::shift_time(gas, empty, 2.5);
@@ -74,7 +74,7 @@ TEST_SUITE("exercise-08") {
     check_centres(empty.old_centres, gas, 2.5);
   }
 
-  EXERCISE_TEST(
+  TEST_CASE(
       "exercise-08 no ball moves: R is left as it was and only the picture changes") {
     gas::Gas gas = three_balls();
     const gas::Gas before = gas;
@@ -92,7 +92,7 @@ TEST_SUITE("exercise-08") {
     check_centres(picture.centres, gas, 7.75);
   }
 
-  EXERCISE_TEST("exercise-08 a thousand small steps end where one big step would") {
+  TEST_CASE("exercise-08 a thousand small steps end where one big step would") {
     gas::Gas gas = three_balls();
     gas::Picture picture;
     double t = 2, before = 2;

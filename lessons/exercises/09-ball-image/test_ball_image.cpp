@@ -76,7 +76,7 @@ void check_image(const gas::TextScreen& s, Point centre, double radius) {
 }  // namespace
 
 TEST_SUITE("exercise-09") {
-  EXERCISE_TEST(
+  TEST_CASE(
       "exercise-09 a ball smaller than a character is one glyph: its centre's cell") {
     const gas::TextScreen s = screen();
     INFO(
@@ -90,7 +90,7 @@ TEST_SUITE("exercise-09") {
     }
   }
 
-  EXERCISE_TEST("exercise-09 the centre's cell comes first and no cell comes twice") {
+  TEST_CASE("exercise-09 the centre's cell comes first and no cell comes twice") {
     const gas::TextScreen s = screen();
     const Point centre{20.3, 21.7};
     const std::vector<Cell> image = gas::ball_image(s, centre, 3);
@@ -101,8 +101,7 @@ TEST_SUITE("exercise-09") {
     CHECK(std::adjacent_find(cells.begin(), cells.end()) == cells.end());
   }
 
-  EXERCISE_TEST(
-      "exercise-09 a ball covers the cells whose middles are within its radius") {
+  TEST_CASE("exercise-09 a ball covers the cells whose middles are within its radius") {
     const gas::TextScreen s = screen();
     // A big ball: about 10 columns wide and 5 rows high (a row is twice as
     // tall as a column is wide), so it looks round.
@@ -113,7 +112,7 @@ TEST_SUITE("exercise-09") {
     check_image(s, {10.5, 11}, 2);
   }
 
-  EXERCISE_TEST("exercise-09 a ball at a wall or past it stays inside the border") {
+  TEST_CASE("exercise-09 a ball at a wall or past it stays inside the border") {
     const gas::TextScreen s = screen();
     INFO(
         "cells beyond the table are not drawn: cell_of keeps every point inside the "

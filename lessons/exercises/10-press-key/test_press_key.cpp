@@ -37,7 +37,7 @@ constexpr int end = static_cast<int>(KeyEffect::end);
 }  // namespace
 
 TEST_SUITE("exercise-10") {
-  EXERCISE_TEST("exercise-10 S stops the model and R runs it again") {
+  TEST_CASE("exercise-10 S stops the model and R runs it again") {
     Control control = three_balls();
     CHECK(effect(control, 'S') == none);
     CHECK(control.stopped);
@@ -45,7 +45,7 @@ TEST_SUITE("exercise-10") {
     CHECK_FALSE(control.stopped);
   }
 
-  EXERCISE_TEST("exercise-10 > doubles T0 and < halves it") {
+  TEST_CASE("exercise-10 > doubles T0 and < halves it") {
     Control control = three_balls();
     CHECK(effect(control, '>') == none);
     CHECK(control.gas.display_step == 2);
@@ -59,7 +59,7 @@ TEST_SUITE("exercise-10") {
     CHECK(control.gas.time == 2);
   }
 
-  EXERCISE_TEST(
+  TEST_CASE(
       "exercise-10 B reverses every velocity at the present time and changes the tone") {
     Control control = three_balls();
     control.must_find_collision = false;
@@ -88,7 +88,7 @@ TEST_SUITE("exercise-10") {
     CHECK(control.gas.balls[0].vx == before[0].vx);
   }
 
-  EXERCISE_TEST("exercise-10 0 asks for a redraw and E ends") {
+  TEST_CASE("exercise-10 0 asks for a redraw and E ends") {
     Control control = three_balls();
     CHECK(effect(control, '0') == redraw);
     CHECK_FALSE(control.ended);
@@ -96,7 +96,7 @@ TEST_SUITE("exercise-10") {
     CHECK(control.ended);
   }
 
-  EXERCISE_TEST("exercise-10 keys work in lower case and other keys do nothing") {
+  TEST_CASE("exercise-10 keys work in lower case and other keys do nothing") {
     Control control = three_balls();
     gas::press_key(control, 's');
     CHECK(control.stopped);
@@ -115,7 +115,7 @@ TEST_SUITE("exercise-10") {
     CHECK_FALSE(quiet.ended);
   }
 
-  EXERCISE_TEST("exercise-10 T0 stays a positive finite number that still moves T") {
+  TEST_CASE("exercise-10 T0 stays a positive finite number that still moves T") {
     Control control = three_balls();
     for (int press = 0; press < 2000; ++press) gas::press_key(control, '>');
     INFO("doubled 2000 times a double overflows to infinity: stop doubling before that");

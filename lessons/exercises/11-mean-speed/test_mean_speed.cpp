@@ -18,14 +18,13 @@
 using gas::exercises::table;
 
 TEST_SUITE("exercise-11") {
-  EXERCISE_TEST("exercise-11 one ball moving at (3 4) has speed 5") {
+  TEST_CASE("exercise-11 one ball moving at (3 4) has speed 5") {
     INFO("the speed is the length of the velocity: sqrt(vx^2 + vy^2)");
     CHECK(gas::mean_speed(table({{10, 10, 3, 4}})) == 5);
     CHECK(gas::mean_speed(table({{10, 10, -3, -4}})) == 5);
   }
 
-  EXERCISE_TEST(
-      "exercise-11 the mean of the speeds and not the speed of the mean velocity") {
+  TEST_CASE("exercise-11 the mean of the speeds and not the speed of the mean velocity") {
     INFO(
         "two balls flying apart at speed 5 have mean speed 5, though their velocities "
         "add up to 0");
@@ -34,14 +33,13 @@ TEST_SUITE("exercise-11") {
     CHECK(gas::mean_speed(table({{5, 5, 0, 1}, {10, 5, -2, 0}, {15, 5, 0, -6}})) == 3);
   }
 
-  EXERCISE_TEST("exercise-11 a gas at rest or without balls has mean speed 0") {
+  TEST_CASE("exercise-11 a gas at rest or without balls has mean speed 0") {
     CHECK(gas::mean_speed(table({{5, 5, 0, 0}, {10, 5, 0, 0}})) == 0);
     INFO("no balls: the mean of nothing is taken as 0 here (not 0 / 0, which is NaN)");
     CHECK(gas::mean_speed(table({})) == 0);
   }
 
-  EXERCISE_TEST(
-      "exercise-11 the default scene's mean speed is 1.44524 as lesson 1 shows") {
+  TEST_CASE("exercise-11 the default scene's mean speed is 1.44524 as lesson 1 shows") {
     const gas::Gas scene = gas::build_gas(
         gas::parse_scene_description(gas::default_scene_text, "default scene"));
     // Why 5e-6: the screen prints 6 significant digits, so the true value is
