@@ -78,9 +78,10 @@ inline std::string row(const Ball& ball) {
 
 // Every ball of a gas, one per line, after T and the table.
 inline std::string describe(const Gas& gas) {
-  std::string text = fmt::format("a gas of {} balls at T = {} (a = {}, A1 = {}, A2 = {})",
-                                 gas.balls.size(), digits(gas.time), digits(gas.radius),
-                                 digits(gas.width), digits(gas.height));
+  std::string text =
+      fmt::format("a gas of {} ball{} at T = {} (a = {}, A1 = {}, A2 = {})",
+                  gas.balls.size(), gas.balls.size() == 1 ? "" : "s", digits(gas.time),
+                  digits(gas.radius), digits(gas.width), digits(gas.height));
   for (std::size_t i = 0; i < gas.balls.size(); ++i)
     text += fmt::format("\n    ball {}: {}", i + 1, row(gas.balls[i]));
   return text;
