@@ -63,14 +63,15 @@ std::vector<Cell> disc(const gas::TextScreen& s, Point centre, double radius) {
   return cells;
 }
 
-void check_image(const gas::TextScreen& s, Point centre, double radius) {
+bool check_image(const gas::TextScreen& s, Point centre, double radius) {
   CAPTURE(centre);
   CAPTURE(radius);
   const std::vector<Cell> image = gas::ball_image(s, centre, radius);
   const std::vector<Cell> wanted = disc(s, centre, radius);
-  INFO("wanted (column row):" << text(wanted));
+  INFO("wanted [column row]:" << text(wanted));
   INFO("got:" << text(image));
   CHECK(sorted(image) == sorted(wanted));
+  return sorted(image) == sorted(wanted);
 }
 
 }  // namespace
@@ -123,6 +124,24 @@ TEST_SUITE("exercise-09") {
     for (const Cell& cell : gas::ball_image(s, {58.25, 44.5}, 3)) {
       CAPTURE(cell);
       CHECK(s.inside(cell));
+    }
+  }
+
+  TEST_CASE("exercise-09 300 generated balls on screens of every size") {
+    // Screens of 3 to 100 columns and 3 to 40 rows (stage 3's character
+    // screen: a column 1 unit wide, a row 2 tall), centres anywhere on the
+    // table and a little beyond, radii from 0.1 to 12. The numbers are
+    // random, so no cell middle lies on a circle but by a chance too small
+    // to matter.
+    gas::exercises::Draw draw(901);
+    for (int n = 1; n <= 300; ++n) {
+      const gas::TextScreen s =
+          gas::prepare_character_screen(draw.integer(3, 100), draw.integer(3, 40));
+      const double width = s.columns - 2, height = 2.0 * (s.rows - 2);
+      const Point centre{draw.uniform(-1, width + 1), draw.uniform(-1, height + 1)};
+      CAPTURE(n);
+      INFO("a screen of " << s.columns << " x " << s.rows << " characters");
+      if (!check_image(s, centre, draw.magnitude(-1, 1.08))) break;
     }
   }
 }
