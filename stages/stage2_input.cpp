@@ -30,10 +30,12 @@ struct Given {
   int line = 0;
 };
 
-// A 'random COUNT SEED SPEED' line as written, its numbers not checked yet.
+// A 'random COUNT SEED SPEED' or 'lattice COUNT SEED SPEED' line as
+// written, its numbers not checked yet.
 struct RandomLine {
   double count = 0, seed = 0, speed = 0;
   int line = 0;
+  const char* keyword = "random";  // or "lattice"
 };
 
 // What the file said, line by line, before any check that needs the whole
@@ -129,11 +131,12 @@ std::string keyword_hint(std::string_view keyword) {
     return out;
   };
   std::string hint;
-  for (const char* known : {"a", "T0", "A1", "A2", "N", "ball", "random", "T"}) {
+  for (const char* known :
+       {"a", "T0", "A1", "A2", "N", "ball", "random", "lattice", "T"}) {
     if (lower(keyword) == lower(known))
       hint = fmt::format(" (names are case-sensitive: did you mean '{}'?)", known);
   }
-  if (hint.empty()) hint = " (expected a, T0, A1, A2, N, ball or random)";
+  if (hint.empty()) hint = " (expected a, T0, A1, A2, N, ball, random or lattice)";
   return hint;
 }
 
@@ -198,13 +201,18 @@ void read_line(std::string_view line, int line_number, SceneText& scene) {
     scene.balls.push_back(Ball{v[0], v[1], v[2], v[3], since_given ? v[4] : 0.0});
     scene.ball_lines.push_back(line_number);
     scene.since_given.push_back(since_given);
-  } else if (keyword == "random") {
+  } else if (keyword == "random" || keyword == "lattice") {
     const std::vector<double> v = numbers(3, "COUNT SEED SPEED");
     if (scene.random) {
       fail(scene.file_name, line_number,
-           fmt::format("'random' is given twice (first on line {})", scene.random->line));
+           keyword == scene.random->keyword
+               ? fmt::format("'{}' is given twice (first on line {})", keyword,
+                             scene.random->line)
+               : fmt::format("one 'random' or 'lattice' line only ('{}' is on line {})",
+                             scene.random->keyword, scene.random->line));
     }
-    scene.random = RandomLine{v[0], v[1], v[2], line_number};
+    scene.random = RandomLine{v[0], v[1], v[2], line_number,
+                              keyword == "random" ? "random" : "lattice"};
   } else {
     const std::string unknown =
         fmt::format("unknown keyword '{}'{}", printable(keyword), keyword_hint(keyword));
@@ -258,7 +266,7 @@ void check_sizes(const SceneText& scene) {
 }
 // [/anchor: check-sizes]
 
-// Check the numbers of a 'random' line: COUNT a whole number from 1 to
+// Check the numbers of a 'random' (or 'lattice') line: COUNT a whole number from 1 to
 // most_random_balls, SEED a whole number from 0 to 2^53 (a double holds every
 // such number exactly), SPEED > 0 and small enough that 1.5 SPEED is still a
 // size the program computes with. The request, or none without the line.
@@ -268,22 +276,23 @@ std::optional<RandomBalls> check_random_line(const SceneText& scene) {
   if (random.count < 1 || random.count > most_random_balls ||
       random.count != std::floor(random.count)) {
     fail(scene.file_name, random.line,
-         fmt::format("'random' COUNT = {} must be a whole number from 1 to {}",
-                     random.count, most_random_balls));
+         fmt::format("'{}' COUNT = {} must be a whole number from 1 to {}",
+                     random.keyword, random.count, most_random_balls));
   }
   if (random.seed < 0 || random.seed > 0x1.0p53 ||
       random.seed != std::floor(random.seed)) {
     fail(scene.file_name, random.line,
-         fmt::format("'random' SEED = {} must be a whole number from 0 to 2^53",
-                     random.seed));
+         fmt::format("'{}' SEED = {} must be a whole number from 0 to 2^53",
+                     random.keyword, random.seed));
   }
   if (random.speed <= 0 || 1.5 * random.speed > largest_magnitude) {
     fail(scene.file_name, random.line,
-         fmt::format("'random' SPEED = {} must be positive and at most {:g}",
+         fmt::format("'{}' SPEED = {} must be positive and at most {:g}", random.keyword,
                      random.speed, largest_magnitude / 1.5));
   }
   return RandomBalls{static_cast<std::size_t>(random.count),
-                     static_cast<std::uint64_t>(random.seed), random.speed, random.line};
+                     static_cast<std::uint64_t>(random.seed), random.speed, random.line,
+                     random.keyword == std::string_view("lattice")};
 }
 
 // Check that N, if given, is a whole number that agrees with the balls of the
@@ -304,7 +313,8 @@ void check_count(const SceneText& scene) {
           fmt::format("N = {} but the file has {} 'ball' line{}", n.value, lines, plural);
       if (scene.random) {
         fail(scene.file_name, n.line,
-             fmt::format("{} and 'random' places {}", found, random_count));
+             fmt::format("{} and '{}' places {}", found, scene.random->keyword,
+                         random_count));
       }
       fail(scene.file_name, n.line, found);
     }
@@ -506,9 +516,9 @@ SceneDescription read_scene_description(const std::string& path) {
 Gas build_gas(const SceneDescription& scene) {
   if (scene.random) {
     fail(scene.file_name, scene.random->line,
-         "'random' asks for balls at random places, which stage 2 does not place: "
-         "read the scene with parse_scene or read_scene_file "
-         "(beyond/random_placement.hpp)");
+         fmt::format("'{}' asks for balls that stage 2 does not place: read the scene "
+                     "with parse_scene or read_scene_file (beyond/random_placement.hpp)",
+                     scene.random->lattice ? "lattice" : "random"));
   }
   return scene.gas;
 }

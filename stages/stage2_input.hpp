@@ -67,11 +67,14 @@ inline constexpr double most_random_balls = 1e5;
 // What a 'random COUNT SEED SPEED' line asks for, its numbers checked: COUNT
 // balls at random places, from the generator seeded with SEED, with speeds
 // around SPEED. Beyond the article; beyond/random_placement.* carries it out.
+// A 'lattice COUNT SEED SPEED' line asks for the same, but on a lattice,
+// every ball at speed SPEED exactly (a start far from equilibrium).
 struct RandomBalls {
   std::size_t count = 0;   // COUNT, 1 to most_random_balls
   std::uint64_t seed = 0;  // SEED, 0 to 2^53
   double speed = 0;        // SPEED > 0
   int line = 0;            // the line of the file it is on, for messages
+  bool lattice = false;    // 'lattice': on a lattice, every speed SPEED
 };
 
 // A scene as its file describes it, every check passed: the gas of its

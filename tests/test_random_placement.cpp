@@ -8,6 +8,8 @@
 // - The same scene on every machine: the first ball's numbers are pinned to
 //   the bit (they follow from std::mt19937_64, whose output the C++ standard
 //   fixes, our own mapping to [0, 1), and correctly rounded arithmetic).
+// - The line 'lattice COUNT SEED SPEED': the balls on a lattice filling the
+//   table, every speed SPEED.
 // - What it refuses is in data/bad/random-*.scene (suite stage2's golden
 //   messages); here, the limits one by one (COUNT, SEED and SPEED are
 //   checked by stage 2, the density by the placement).
@@ -144,5 +146,48 @@ TEST_SUITE("random-placement") {
     // balls on 1000 x 1000 cover 0.079).
     CHECK(parse("a 0.5\nT0 1\nA1 1000\nA2 1000\nrandom 100000 9007199254740992 1\n")
               .balls.size() == 100000);
+  }
+
+  TEST_CASE("lattice: COUNT balls on a lattice filling the table and every speed SPEED") {
+    // 10 balls on a 40 x 20 table: 5 across (ceil(sqrt(10 * 2)) = 5) and 2
+    // down, a point every 8 across and 10 down, half a spacing from the walls.
+    const gas::Gas g = parse("a 1\nT0 1\nA1 40\nA2 20\nball 2 2 0 0\nlattice 10 7 2.5\n");
+    REQUIRE(g.balls.size() == 11);
+    for (std::size_t k = 0; k < 10; ++k) {
+      CAPTURE(k);
+      const gas::Ball& b = g.balls[k + 1];  // after the 'ball' line's ball
+      CHECK(b.x == 4 + 8.0 * static_cast<double>(k % 5));
+      CHECK(b.y == 5 + 10.0 * static_cast<double>(k / 5));
+      // Every speed SPEED, to rounding: |v| = SPEED (u / l, v / l) with
+      // l = sqrt(u^2 + v^2) is SPEED within a few units in the last place.
+      CHECK(std::hypot(b.vx, b.vy) == doctest::Approx(2.5).epsilon(1e-15));
+    }
+    // The directions come from SEED: another seed, other directions.
+    const gas::Gas other =
+        parse("a 1\nT0 1\nA1 40\nA2 20\nball 2 2 0 0\nlattice 10 8 2.5\n");
+    CHECK(other.balls[1].vx != g.balls[1].vx);
+    // The dense scenes of lesson 11: 64 x 64 at area fraction 0.5.
+    const gas::Gas dense = gas::read_scene_file(GAS_SOURCE_DIR "/data/eos-0.5.scene");
+    CHECK(dense.balls.size() == 4096);
+    CHECK(dense.balls[64].y > dense.balls[0].y);  // row by row
+  }
+
+  TEST_CASE("lattice: what it refuses") {
+    const std::string table = "a 1\nT0 1\nA1 100\nA2 100\n";
+    // 50 x 50 points on 100 x 100 are 2 apart: touching.
+    CHECK(refusal(table + "lattice 2500 1 1\n") ==
+          "random.scene:5: 'lattice' cannot place 2500 balls of radius 1 on a 100 x 100 "
+          "table: 50 x 50 points are 2 x 2 apart, less than a diameter");
+    CHECK(refusal(table + "ball 50 50 0 0\nlattice 1 1 1\n") ==
+          "random.scene:6: 'lattice' point (50, 50) for ball 2 is taken by a 'ball' "
+          "line's ball");
+    CHECK(refusal(table + "lattice 0 1 1\n") ==
+          "random.scene:5: 'lattice' COUNT = 0 must be a whole number from 1 to 100000");
+    CHECK(refusal(table + "random 3 1 1\nlattice 3 1 1\n") ==
+          "random.scene:6: one 'random' or 'lattice' line only ('random' is on line 5)");
+    CHECK(refusal(table + "lattice 3 1 1\nlattice 3 1 1\n") ==
+          "random.scene:6: 'lattice' is given twice (first on line 5)");
+    CHECK(refusal(table + "N 4\nlattice 3 1 1\n") ==
+          "random.scene:5: N = 4 but the file has 0 'ball' lines and 'lattice' places 3");
   }
 }

@@ -70,9 +70,11 @@ std::size_t count_ball_lines(const std::string& text) {
     line = line.substr(0, line.find('#'));
     const std::size_t first = line.find_first_not_of(" \t");
     if (first != std::string::npos && line.compare(first, 5, "ball ") == 0) ++count;
-    // 'random COUNT SEED SPEED' places COUNT balls.
-    if (first != std::string::npos && line.compare(first, 7, "random ") == 0)
-      count += std::stoul(line.substr(first + 7));
+    // 'random COUNT SEED SPEED' and 'lattice COUNT SEED SPEED' place COUNT balls.
+    for (const std::string keyword : {"random ", "lattice "}) {
+      if (first != std::string::npos && line.compare(first, keyword.size(), keyword) == 0)
+        count += std::stoul(line.substr(first + keyword.size()));
+    }
     start = end + 1;
   }
   return count;
@@ -240,7 +242,8 @@ TEST_SUITE("stage2") {
 
     // The lines are still counted right: the error names the same line.
     CHECK(refusal(lf + "bogus 1\n", "f") ==
-          "f:9: unknown keyword 'bogus' (expected a, T0, A1, A2, N, ball or random)");
+          "f:9: unknown keyword 'bogus' (expected a, T0, A1, A2, N, ball, random or "
+          "lattice)");
     CHECK(refusal(crlf + "bogus 1\r\n", "f") == refusal(lf + "bogus 1\n", "f"));
 
     // A byte-order mark is only skipped at the very start; elsewhere it is a
@@ -248,8 +251,8 @@ TEST_SUITE("stage2") {
     CHECK(refusal(small_table + "\xEF\xBB\xBF"
                                 "ball 20 30 1 1\n",
                   "f") ==
-          "f:5: unknown keyword '\\xef\\xbb\\xbfball' (expected a, T0, A1, A2, N, ball "
-          "or random)");
+          "f:5: unknown keyword '\\xef\\xbb\\xbfball' (expected a, T0, A1, A2, N, ball, "
+          "random or lattice)");
   }
 
   TEST_CASE(
@@ -442,9 +445,9 @@ TEST_SUITE("stage2") {
     CHECK(scene.random->speed == 2.5);
     CHECK(scene.random->line == 6);
     CHECK_THROWS_WITH_AS(gas::build_gas(scene),
-                         "r.scene:6: 'random' asks for balls at random places, which "
-                         "stage 2 does not place: read the scene with parse_scene or "
-                         "read_scene_file (beyond/random_placement.hpp)",
+                         "r.scene:6: 'random' asks for balls that stage 2 does not "
+                         "place: read the scene with parse_scene or read_scene_file "
+                         "(beyond/random_placement.hpp)",
                          gas::SceneError);
     // The whole reader places them, after the 'ball' line's ball.
     const gas::Gas placed = gas::parse_scene(text, "r.scene");

@@ -114,12 +114,47 @@ void place_centres(const SceneDescription& scene, double covered,
   }
 }
 
+// 'lattice': the centres on a lattice of columns x rows points filling the
+// table (a point every A1 / columns across and A2 / rows down, the first
+// half a spacing from the walls), as square as the table allows, filled row
+// by row. Refused if two neighbours would touch or a point is not free of
+// the 'ball' lines' balls.
+void place_on_lattice(const SceneDescription& scene, Gas& gas) {
+  const std::size_t count = scene.random->count;
+  const auto n = static_cast<double>(count);
+  const double across = std::ceil(std::sqrt(n * gas.width / gas.height));
+  const double down = std::ceil(n / across);
+  const double dx = gas.width / across, dy = gas.height / down;
+  const double diameter = 2 * gas.radius;
+  if (dx <= diameter * (1 + contact_tolerance) ||
+      dy <= diameter * (1 + contact_tolerance)) {
+    fail(scene,
+         fmt::format("'lattice' cannot place {} balls of radius {} on a {} x {} "
+                     "table: {} x {} points are {:.4g} x {:.4g} apart, less than "
+                     "a diameter",
+                     count, gas.radius, gas.width, gas.height, across, down, dx, dy));
+  }
+  PlacedBalls placed(gas, gas.balls.size() + count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const double column = std::fmod(static_cast<double>(k), across);
+    const double row = std::floor(static_cast<double>(k) / across);
+    const double x = (column + 0.5) * dx, y = (row + 0.5) * dy;
+    if (!placed.free(x, y)) {
+      fail(scene, fmt::format("'lattice' point ({}, {}) for ball {} is taken by a 'ball' "
+                              "line's ball",
+                              x, y, gas.balls.size() + 1));
+    }
+    gas.balls.push_back(Ball{x, y, 0, 0, gas.time});  // its row written at T
+    placed.file(gas.balls.size() - 1);
+  }
+}
+
 // The velocities of balls `first` on: a direction uniform on the circle (a
 // point drawn in the square [-1, 1)^2 until it falls inside the unit disc), a
-// speed uniform in [0.5, 1.5) SPEED. A component too small to compute with
-// is 0.
-void give_velocities(double speed, std::size_t first, std::mt19937_64& generator,
-                     Gas& gas) {
+// speed uniform in [0.5, 1.5) SPEED, or SPEED itself if `same_speed`. A
+// component too small to compute with is 0.
+void give_velocities(double speed, bool same_speed, std::size_t first,
+                     std::mt19937_64& generator, Gas& gas) {
   for (std::size_t k = first; k < gas.balls.size(); ++k) {
     double u = 0, v = 0, square = 0;
     do {
@@ -128,7 +163,7 @@ void give_velocities(double speed, std::size_t first, std::mt19937_64& generator
       square = u * u + v * v;
     } while (square == 0 || square > 1);
     const double length = std::sqrt(square);
-    const double drawn = speed * (0.5 + unit_interval(generator));
+    const double drawn = same_speed ? speed : speed * (0.5 + unit_interval(generator));
     Ball& ball = gas.balls[k];
     ball.vx = drawn * (u / length);
     ball.vy = drawn * (v / length);
@@ -150,17 +185,21 @@ Gas place_random_balls(const SceneDescription& scene) {
       total * std::numbers::pi * gas.radius * gas.radius / (gas.width * gas.height);
   if (covered > densest_packing) {
     fail(scene,
-         fmt::format("'random' cannot place {} balls of radius {} on a {} x {} table: "
+         fmt::format("'{}' cannot place {} balls of radius {} on a {} x {} table: "
                      "they would cover {:.3g} of it, more than any packing of discs "
                      "({:.4f})",
-                     random.count, gas.radius, gas.width, gas.height, covered,
-                     densest_packing));
+                     random.lattice ? "lattice" : "random", random.count, gas.radius,
+                     gas.width, gas.height, covered, densest_packing));
   }
 
   std::mt19937_64 generator(random.seed);
   const std::size_t first = gas.balls.size();
-  place_centres(scene, covered, generator, gas);
-  give_velocities(random.speed, first, generator, gas);
+  if (random.lattice) {
+    place_on_lattice(scene, gas);
+  } else {
+    place_centres(scene, covered, generator, gas);
+  }
+  give_velocities(random.speed, random.lattice, first, generator, gas);
   return gas;
 }
 
