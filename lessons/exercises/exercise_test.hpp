@@ -1,22 +1,24 @@
 // The provided tests of the student exercises: what every test file of
 // lessons/exercises/NN-name/ includes.
 //
-// EXERCISE_TEST("name") is doctest's TEST_CASE("name"), locked — skipped,
-// with doctest::skip — until GAS_UNLOCKED reaches it (lessons/exercises/
-// README.md). The tests are numbered in order: exercise 01's first, in the
-// order they are written in their file, then exercise 02's, and so on.
-// lessons/exercises/CMakeLists.txt compiles each test file with
-// GAS_TESTS_BEFORE, the number of tests of the exercises before it, and the
-// counter below numbers the file's own tests: doctest registers the tests of
-// one file from top to bottom, so the counter meets them in that order.
-//
-// Also a small table to put balls on, and how doctest prints the stages'
-// small structs in a failed check.
+// - A small table to put balls on (`table`).
+// - Generated cases: `Draw`, numbers drawn from a fixed seed, the same on
+//   every machine and every run, so that a test can try hundreds of inputs
+//   that an answer cannot be shaped to.
+// - Failure messages that say everything: CHECK_NUMBER says the inputs, the
+//   value wanted and the value your code gave, each to 17 significant digits
+//   (enough to tell any two doubles apart), and how far apart they are.
 #pragma once
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <ostream>
+#include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -24,11 +26,6 @@
 #include "stage3_screen.hpp"
 
 namespace gas::exercises {
-
-// Whether test number `ordinal` (1 = the first test of exercise 01) is locked
-// in this test program. Defined in unlock.cpp, which each test program
-// compiles with its own number of unlocked tests.
-bool locked(int ordinal);
 
 // A 40 x 30 table with balls of radius 1, so that every centre stays within
 // 1 <= x <= 39, 1 <= y <= 29; T = `time`, T0 = 1.
@@ -43,21 +40,104 @@ inline Gas table(std::vector<Ball> balls, double time = 0) {
   return gas;
 }
 
+// Numbers drawn from a fixed seed. std::mt19937_64's sequence is fixed by the
+// C++ standard; the <random> distributions are not, so the draws are written
+// out here and give the same numbers with every compiler.
+class Draw {
+ public:
+  explicit Draw(std::uint64_t seed) : engine_(seed) {}
+
+  // Uniform in [low, high), every one of a double's 53 bits drawn.
+  double uniform(double low, double high) {
+    const double unit = static_cast<double>(engine_() >> 11) * 0x1.0p-53;
+    return low + (high - low) * unit;
+  }
+  // Uniform among the whole numbers low .. high.
+  int integer(int low, int high) {
+    const auto span = static_cast<std::uint64_t>(high - low) + 1;
+    return low + static_cast<int>(engine_() % span);
+  }
+  bool coin() { return (engine_() >> 63) != 0; }
+  // A size spread over many orders of magnitude: from 10^low to 10^high.
+  double magnitude(double low, double high) { return std::pow(10.0, uniform(low, high)); }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+// A double to 17 significant digits: read back, it is the same double.
+inline std::string digits(double value) {
+  return fmt::format("{:.17g}", value);
+}
+
+// A ball as its row of R: {x, y, vx, vy, since}, to 17 digits.
+inline std::string row(const Ball& ball) {
+  return fmt::format("{{{}, {}, {}, {}, {}}}", digits(ball.x), digits(ball.y),
+                     digits(ball.vx), digits(ball.vy), digits(ball.since));
+}
+
+// Every ball of a gas, one per line, after T and the table.
+inline std::string describe(const Gas& gas) {
+  std::string text =
+      fmt::format("a gas of {} ball{} at T = {} (a = {}, A1 = {}, A2 = {})",
+                  gas.balls.size(), gas.balls.size() == 1 ? "" : "s", digits(gas.time),
+                  digits(gas.radius), digits(gas.width), digits(gas.height));
+  for (std::size_t i = 0; i < gas.balls.size(); ++i)
+    text += fmt::format("\n    ball {}: {}", i + 1, row(gas.balls[i]));
+  return text;
+}
+
+// Whether `got` is `wanted`: the same number (+0 and -0 alike; infinity
+// only infinity; NaN nothing), or within `relative` times |wanted| of it, or
+// within `absolute` of it.
+inline bool agrees(double got, double wanted, double relative, double absolute = 0) {
+  if (got == wanted) return true;
+  return std::isfinite(wanted) &&
+         std::fabs(got - wanted) <= std::max(relative * std::fabs(wanted), absolute);
+}
+
+// What a failed check says: the inputs, the value wanted, the value got,
+// and how far apart they are.
+inline std::string compared(const std::string& inputs, double wanted, double got) {
+  std::string text =
+      fmt::format("{}\n  wanted {}\n  got    {}", inputs, digits(wanted), digits(got));
+  if (std::isfinite(wanted) && std::isfinite(got) && wanted != 0) {
+    const double off = std::fabs(got - wanted) / std::fabs(wanted);
+    text += fmt::format("  (off by {:.2g} of the value wanted)", off);
+    // float keeps 24 bits, about 6e-8 of a number; double 53, about 1e-16.
+    if (off > 1e-9 && off < 1e-5)
+      text += "\n  that is about float's precision: is a sum or a value kept in float?";
+  }
+  return text;
+}
+
 }  // namespace gas::exercises
 
-namespace {
-int exercise_tests_in_this_file = 0;
-}  // namespace
+// CHECK_NUMBER(inputs, got, wanted, relative): checks that the double `got`
+// agrees with `wanted` (exactly if `relative` is 0, see agrees), and if not
+// says `inputs` (a string: the call and its arguments), wanted and got. It
+// is true when they agree, so that a loop over generated cases can stop at
+// the first that fails: `if (!CHECK_NUMBER(...)) break;`.
+#define CHECK_NUMBER(inputs, got, wanted, relative) \
+  CHECK_CLOSE(inputs, got, wanted, relative, 0)
 
-// (In TEST_CASE, `name * decorator` is doctest's way to decorate a test.)
-#define EXERCISE_TEST(name)      \
-  TEST_CASE(name* doctest::skip( \
-      gas::exercises::locked(GAS_TESTS_BEFORE + ++exercise_tests_in_this_file)))
+// CHECK_CLOSE(inputs, got, wanted, relative, absolute): the same, and `got`
+// may also be within `absolute` of `wanted` (for values near 0, where a
+// relative tolerance asks too much).
+#define CHECK_CLOSE(inputs, got, wanted, relative, absolute)                            \
+  [&] {                                                                                 \
+    const double got_value = (got), wanted_value = (wanted);                            \
+    const bool agrees =                                                                 \
+        gas::exercises::agrees(got_value, wanted_value, (relative), (absolute));        \
+    CHECK_MESSAGE(agrees, gas::exercises::compared((inputs), wanted_value, got_value)); \
+    return agrees;                                                                      \
+  }()
 
 // Printed in failed checks as (x, y) and [column, row].
 namespace gas {
 inline std::ostream& operator<<(std::ostream& out, const Point& p) {
-  return out << '(' << p.x << ", " << p.y << ')';
+  return out << '(' << gas::exercises::digits(p.x) << ", " << gas::exercises::digits(p.y)
+             << ')';
 }
 inline std::ostream& operator<<(std::ostream& out, const Cell& c) {
   return out << "[column " << c.column << ", row " << c.row << ']';

@@ -1,7 +1,7 @@
 // Exercise 01 — YOUR kinetic_energy (stage 1, variables and data).
 //
 // The task: lessons/exercises/01-kinetic-energy/instructions.md. The tests:
-// test_kinetic_energy.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_kinetic_energy.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in stages/stage1_data.cpp.
 // ([[maybe_unused]] only keeps the compiler quiet while the body is a
 // placeholder; delete it when you like.)

@@ -1,7 +1,7 @@
 // Exercise 02 — YOUR scene_text (stage 2, input: the scene file, written).
 //
 // The task: lessons/exercises/02-scene-text/instructions.md. The tests:
-// test_scene_text.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_scene_text.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in stages/stage2_input.cpp.
 // ([[maybe_unused]] only keeps the compiler quiet while the body is a
 // placeholder; delete it when you like.)

@@ -1,7 +1,7 @@
 // Exercise 03 — YOUR TextScreen::cell_of (stage 3, screen preparation).
 //
 // The task: lessons/exercises/03-cell-of/instructions.md. The tests:
-// test_cell_of.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_cell_of.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in stages/stage3_screen.cpp.
 // ([[maybe_unused]] only keeps the compiler quiet while the body is a
 // placeholder; delete it when you like.)

@@ -13,6 +13,7 @@
 //   row 1    y from 16 to 20   (the top of the table)
 //   row 5    y from  0 to  4   (the bottom)
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include "exercise_test.hpp"
 #include "stage3_screen.hpp"
@@ -33,16 +34,14 @@ gas::TextScreen grid() {
 }  // namespace
 
 TEST_SUITE("exercise-03") {
-  EXERCISE_TEST(
-      "exercise-03 the bottom-left corner of the table is the bottom-left cell") {
+  TEST_CASE("exercise-03 the bottom-left corner of the table is the bottom-left cell") {
     const gas::TextScreen screen = grid();
     INFO("y grows upwards on the table but rows grow downwards on the screen");
     CHECK(screen.cell_of({0.5, 0.5}) == Cell{1, 5});
     CHECK(screen.cell_of({0, 0}) == Cell{1, 5});
   }
 
-  EXERCISE_TEST(
-      "exercise-03 columns count from x = 0 and rows from the top of the table") {
+  TEST_CASE("exercise-03 columns count from x = 0 and rows from the top of the table") {
     const gas::TextScreen screen = grid();
     CHECK(screen.cell_of({3, 1}) == Cell{2, 5});         // x in [2, 4): column 2
     CHECK(screen.cell_of({5, 9}) == Cell{3, 3});         // y in [8, 12): row 3
@@ -50,8 +49,7 @@ TEST_SUITE("exercise-03") {
     CHECK(screen.cell_of({11, 17}) == Cell{6, 1});
   }
 
-  EXERCISE_TEST(
-      "exercise-03 a point on a cell's left or lower edge belongs to that cell") {
+  TEST_CASE("exercise-03 a point on a cell's left or lower edge belongs to that cell") {
     const gas::TextScreen screen = grid();
     INFO("a cell holds its left and lower edges: column k holds 2(k-1) <= x < 2k");
     CHECK(screen.cell_of({4, 8}) == Cell{3, 3});
@@ -59,8 +57,7 @@ TEST_SUITE("exercise-03") {
     CHECK(screen.cell_of({18, 12}) == Cell{10, 2});
   }
 
-  EXERCISE_TEST(
-      "exercise-03 points on the far walls or beyond them stay inside the border") {
+  TEST_CASE("exercise-03 points on the far walls or beyond them stay inside the border") {
     const gas::TextScreen screen = grid();
     INFO("clamp the column to 1..columns-2 and the row to 1..rows-2");
     // The top-right corner of the table lies on the border's lines.
@@ -72,7 +69,7 @@ TEST_SUITE("exercise-03") {
     CHECK(screen.cell_of({-0.5, 10}) == Cell{1, 3});
   }
 
-  EXERCISE_TEST("exercise-03 the middle of every cell lies in that cell") {
+  TEST_CASE("exercise-03 the middle of every cell lies in that cell") {
     const gas::TextScreen screen = grid();
     // middle_of (stage 3, beside cell_of) goes the other way: from a cell to
     // the point at its middle.
@@ -82,6 +79,42 @@ TEST_SUITE("exercise-03") {
         CAPTURE(cell);
         CHECK(screen.cell_of(screen.middle_of(cell)) == cell);
       }
+    }
+  }
+
+  TEST_CASE("exercise-03 500 generated points on screens of every size") {
+    // Screens of 3 to 120 columns and 3 to 60 rows, cells 1/8 to 8 units
+    // wide and tall, and points on a grid of 1/64 of a cell (edges
+    // included) from a cell beyond one side of the table to one beyond
+    // the other: every number exact in binary, so each point lies in one
+    // cell for sure. The cell wanted is found by looking at every column
+    // and every row, not by a formula.
+    gas::exercises::Draw draw(301);
+    for (int n = 1; n <= 500; ++n) {
+      gas::TextScreen screen;
+      screen.columns = draw.integer(3, 120);
+      screen.rows = draw.integer(3, 60);
+      screen.column_width = draw.integer(1, 64) / 8.0;
+      screen.row_height = draw.integer(1, 64) / 8.0;
+      const int last_column = screen.columns - 2, last_row = screen.rows - 2;
+      const double x =
+          draw.integer(-64, 64 * (last_column + 1)) / 64.0 * screen.column_width;
+      const double y = draw.integer(-64, 64 * (last_row + 1)) / 64.0 * screen.row_height;
+      Cell wanted{1, last_row};  // left of or below the table
+      for (int column = 1; column <= last_column; ++column)
+        if (x >= (column - 1) * screen.column_width) wanted.column = column;
+      for (int from_bottom = 0; from_bottom < last_row; ++from_bottom)
+        if (y >= from_bottom * screen.row_height) wanted.row = last_row - from_bottom;
+      const Cell got = screen.cell_of({x, y});
+      CAPTURE(n);
+      INFO(fmt::format(
+          "cell_of(({}, {})) on a screen of {} x {} characters, border included, each "
+          "{} wide and {} tall",
+          gas::exercises::digits(x), gas::exercises::digits(y), screen.columns,
+          screen.rows, gas::exercises::digits(screen.column_width),
+          gas::exercises::digits(screen.row_height)));
+      CHECK(got == wanted);
+      if (!(got == wanted)) break;
     }
   }
 }

@@ -1,7 +1,7 @@
 // Exercise 04 — YOUR time_to_wall (stage 4, first collision: the walls).
 //
 // The task: lessons/exercises/04-time-to-wall/instructions.md. The tests:
-// test_time_to_wall.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_time_to_wall.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in
 // stages/stage4_first_collision.cpp. ([[maybe_unused]] only keeps the
 // compiler quiet while the body is a placeholder; delete it when you like.)

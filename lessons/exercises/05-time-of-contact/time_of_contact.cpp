@@ -1,8 +1,8 @@
 // Exercise 05 — YOUR time_of_contact (stage 4, first collision: two balls).
 //
 // The task: lessons/exercises/05-time-of-contact/instructions.md. The tests:
-// test_time_of_contact.cpp beside this file. Built with
-// -DGAS_EXERCISES=student, this definition stands in for the reference one
+// test_time_of_contact.cpp beside this file. Once you have
+// edited it, this definition stands in for the reference one
 // in stages/stage4_first_collision.cpp. ([[maybe_unused]] only keeps the
 // compiler quiet while the body is a placeholder; delete it when you like.)
 #include <algorithm>

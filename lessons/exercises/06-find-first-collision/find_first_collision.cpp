@@ -1,8 +1,8 @@
 // Exercise 06 — YOUR find_first_collision (stage 4, first collision: the scan).
 //
 // The task: lessons/exercises/06-find-first-collision/instructions.md. The
-// tests: test_find_first_collision.cpp beside this file. Built with
-// -DGAS_EXERCISES=student, this definition stands in for the reference one
+// tests: test_find_first_collision.cpp beside this file. Once you have
+// edited it, this definition stands in for the reference one
 // in stages/stage4_first_collision.cpp. ([[maybe_unused]] only keeps the
 // compiler quiet while the body is a placeholder; delete it when you like.)
 #include <algorithm>

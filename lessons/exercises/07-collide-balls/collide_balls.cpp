@@ -1,7 +1,7 @@
 // Exercise 07 — YOUR collide_balls (stage 5, new coordinates: the formula VI).
 //
 // The task: lessons/exercises/07-collide-balls/instructions.md. The tests:
-// test_collide_balls.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_collide_balls.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in
 // stages/stage5_new_coordinates.cpp. ([[maybe_unused]] only keeps the
 // compiler quiet while the body is a placeholder; delete it when you like.)

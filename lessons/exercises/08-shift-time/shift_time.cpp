@@ -1,7 +1,7 @@
 // Exercise 08 — YOUR shift_time (stage 5, new coordinates: the step T1).
 //
 // The task: lessons/exercises/08-shift-time/instructions.md. The tests:
-// test_shift_time.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_shift_time.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in
 // stages/stage5_new_coordinates.cpp. ([[maybe_unused]] only keeps the
 // compiler quiet while the body is a placeholder; delete it when you like.)

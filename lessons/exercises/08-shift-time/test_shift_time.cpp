@@ -8,8 +8,10 @@
 // 1), not by moving the old centres on: then they are the same doubles as
 // centre_at's, and the checks can ask for equality.
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "exercise_test.hpp"
@@ -26,20 +28,27 @@ gas::Gas three_balls() {
 }
 
 // Each centre equal, to the last bit, to where its ball is at `time`.
-void check_centres(const std::vector<Point>& centres, const gas::Gas& gas, double time) {
-  REQUIRE_MESSAGE(centres.size() == gas.balls.size(), "one centre per ball");
+bool check_centres(const std::vector<Point>& centres, const gas::Gas& gas, double time,
+                   const std::string& which) {
+  REQUIRE_MESSAGE(centres.size() == gas.balls.size(),
+                  "one centre per ball: " << which << " has " << centres.size() << " for "
+                                          << gas.balls.size() << " balls");
   for (std::size_t i = 0; i < centres.size(); ++i) {
-    CAPTURE(i + 1);  // the ball's number
     const Point wanted = gas::centre_at(gas.balls[i], time);
-    CHECK(centres[i].x == wanted.x);
-    CHECK(centres[i].y == wanted.y);
+    const std::string what =
+        fmt::format("{}[{}] of ball {} {} at T = {}", which, i, i + 1,
+                    gas::exercises::row(gas.balls[i]), gas::exercises::digits(time));
+    if (!CHECK_NUMBER(what + ": x", centres[i].x, wanted.x, 0) ||
+        !CHECK_NUMBER(what + ": y", centres[i].y, wanted.y, 0))
+      return false;
   }
+  return true;
 }
 
 }  // namespace
 
 TEST_SUITE("exercise-08") {
-  EXERCISE_TEST("exercise-08 the new centres are the centres at the new time") {
+  TEST_CASE("exercise-08 the new centres are the centres at the new time") {
     gas::Gas gas = three_balls();
     gas::Picture picture;
     picture.centres = gas::centres_at(gas, 2);
@@ -47,10 +56,10 @@ TEST_SUITE("exercise-08") {
     gas::shift_time(gas, picture, 3.5);
     CHECK(gas.time == 3.5);
     INFO("picture.centres: where each ball is at the new T (centre_at or centres_at)");
-    check_centres(picture.centres, gas, 3.5);
+    check_centres(picture.centres, gas, 3.5, "picture.centres");
   }
 
-  EXERCISE_TEST("exercise-08 the old centres are the ones drawn last time (RS)") {
+  TEST_CASE("exercise-08 the old centres are the ones drawn last time (RS)") {
     gas::Gas gas = three_balls();
     gas::Picture picture;
     picture.centres = gas::centres_at(gas, 2);
@@ -60,21 +69,21 @@ TEST_SUITE("exercise-08") {
     INFO(
         "picture.old_centres: the centres of the picture before, at T = 3, for stage 6 "
         "to erase");
-    check_centres(picture.old_centres, gas, 3);
-    check_centres(picture.centres, gas, 4.25);
+    check_centres(picture.old_centres, gas, 3, "picture.old_centres");
+    check_centres(picture.centres, gas, 4.25, "picture.centres");
   }
 
-  EXERCISE_TEST("exercise-08 the first picture has no past") {
+  TEST_CASE("exercise-08 the first picture has no past") {
     gas::Gas gas = three_balls();
     gas::Picture empty;  // no picture drawn yet: no centres at all
     gas::shift_time(gas, empty, 2.5);
-    check_centres(empty.centres, gas, 2.5);
+    check_centres(empty.centres, gas, 2.5, "picture.centres");
     INFO(
         "with nothing drawn before, the old centres are the new ones (nothing to erase)");
-    check_centres(empty.old_centres, gas, 2.5);
+    check_centres(empty.old_centres, gas, 2.5, "picture.old_centres");
   }
 
-  EXERCISE_TEST(
+  TEST_CASE(
       "exercise-08 no ball moves: R is left as it was and only the picture changes") {
     gas::Gas gas = three_balls();
     const gas::Gas before = gas;
@@ -84,15 +93,16 @@ TEST_SUITE("exercise-08") {
         "the rows of R change only at collisions (stage 5's apply_collision), never in "
         "shift_time");
     for (std::size_t i = 0; i < gas.balls.size(); ++i) {
-      CAPTURE(i + 1);
-      CHECK(gas.balls[i].x == before.balls[i].x);
-      CHECK(gas.balls[i].y == before.balls[i].y);
-      CHECK(gas.balls[i].since == before.balls[i].since);
+      const std::string what =
+          fmt::format("ball {}, {} before", i + 1, gas::exercises::row(before.balls[i]));
+      CHECK_NUMBER(what + ": x", gas.balls[i].x, before.balls[i].x, 0);
+      CHECK_NUMBER(what + ": y", gas.balls[i].y, before.balls[i].y, 0);
+      CHECK_NUMBER(what + ": since", gas.balls[i].since, before.balls[i].since, 0);
     }
-    check_centres(picture.centres, gas, 7.75);
+    check_centres(picture.centres, gas, 7.75, "picture.centres");
   }
 
-  EXERCISE_TEST("exercise-08 a thousand small steps end where one big step would") {
+  TEST_CASE("exercise-08 a thousand small steps end where one big step would") {
     gas::Gas gas = three_balls();
     gas::Picture picture;
     double t = 2, before = 2;
@@ -102,7 +112,41 @@ TEST_SUITE("exercise-08") {
       gas::shift_time(gas, picture, t);
     }
     INFO("adding v * T1 to the old centres a thousand times adds a thousand roundings");
-    check_centres(picture.centres, gas, t);
-    check_centres(picture.old_centres, gas, before);
+    check_centres(picture.centres, gas, t, "picture.centres");
+    check_centres(picture.old_centres, gas, before, "picture.old_centres");
+  }
+
+  TEST_CASE("exercise-08 200 generated gases shifted through random steps") {
+    gas::exercises::Draw draw(801);
+    for (int n = 1; n <= 200; ++n) {
+      std::vector<gas::Ball> balls(static_cast<std::size_t>(draw.integer(1, 30)));
+      double now = draw.uniform(0, 1000);
+      for (gas::Ball& ball : balls)
+        ball = {draw.uniform(1, 39), draw.uniform(1, 29), draw.uniform(-5, 5),
+                draw.uniform(-5, 5), now - draw.uniform(0, 10)};
+      gas::Gas gas = gas::exercises::table(balls, now);
+      const gas::Gas before = gas;
+      gas::Picture picture;
+      bool right = true;
+      CAPTURE(n);
+      for (int step = 0; step < 10 && right; ++step) {
+        const double earlier = now;
+        now += draw.magnitude(-3, 1);  // steps T1 from 0.001 to 10
+        gas::shift_time(gas, picture, now);
+        right = CHECK_NUMBER("T after shift_time(gas, picture, T)", gas.time, now, 0) &&
+                check_centres(picture.centres, gas, now, "picture.centres") &&
+                check_centres(picture.old_centres, gas, step == 0 ? now : earlier,
+                              "picture.old_centres");
+      }
+      for (std::size_t i = 0; i < gas.balls.size() && right; ++i) {
+        const std::string what = fmt::format("ball {}, {} before", i + 1,
+                                             gas::exercises::row(before.balls[i]));
+        right =
+            CHECK_NUMBER(what + ": x", gas.balls[i].x, before.balls[i].x, 0) &&
+            CHECK_NUMBER(what + ": vx", gas.balls[i].vx, before.balls[i].vx, 0) &&
+            CHECK_NUMBER(what + ": since", gas.balls[i].since, before.balls[i].since, 0);
+      }
+      if (!right) break;
+    }
   }
 }

@@ -1,7 +1,7 @@
 // Exercise 09 — YOUR ball_image (stage 6, output: a ball on the text screen).
 //
 // The task: lessons/exercises/09-ball-image/instructions.md. The tests:
-// test_ball_image.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_ball_image.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in stages/stage6_output.cpp.
 // ([[maybe_unused]] only keeps the compiler quiet while the body is a
 // placeholder; delete it when you like.)

@@ -63,20 +63,21 @@ std::vector<Cell> disc(const gas::TextScreen& s, Point centre, double radius) {
   return cells;
 }
 
-void check_image(const gas::TextScreen& s, Point centre, double radius) {
+bool check_image(const gas::TextScreen& s, Point centre, double radius) {
   CAPTURE(centre);
   CAPTURE(radius);
   const std::vector<Cell> image = gas::ball_image(s, centre, radius);
   const std::vector<Cell> wanted = disc(s, centre, radius);
-  INFO("wanted (column row):" << text(wanted));
+  INFO("wanted [column row]:" << text(wanted));
   INFO("got:" << text(image));
   CHECK(sorted(image) == sorted(wanted));
+  return sorted(image) == sorted(wanted);
 }
 
 }  // namespace
 
 TEST_SUITE("exercise-09") {
-  EXERCISE_TEST(
+  TEST_CASE(
       "exercise-09 a ball smaller than a character is one glyph: its centre's cell") {
     const gas::TextScreen s = screen();
     INFO(
@@ -90,7 +91,7 @@ TEST_SUITE("exercise-09") {
     }
   }
 
-  EXERCISE_TEST("exercise-09 the centre's cell comes first and no cell comes twice") {
+  TEST_CASE("exercise-09 the centre's cell comes first and no cell comes twice") {
     const gas::TextScreen s = screen();
     const Point centre{20.3, 21.7};
     const std::vector<Cell> image = gas::ball_image(s, centre, 3);
@@ -101,8 +102,7 @@ TEST_SUITE("exercise-09") {
     CHECK(std::adjacent_find(cells.begin(), cells.end()) == cells.end());
   }
 
-  EXERCISE_TEST(
-      "exercise-09 a ball covers the cells whose middles are within its radius") {
+  TEST_CASE("exercise-09 a ball covers the cells whose middles are within its radius") {
     const gas::TextScreen s = screen();
     // A big ball: about 10 columns wide and 5 rows high (a row is twice as
     // tall as a column is wide), so it looks round.
@@ -113,7 +113,7 @@ TEST_SUITE("exercise-09") {
     check_image(s, {10.5, 11}, 2);
   }
 
-  EXERCISE_TEST("exercise-09 a ball at a wall or past it stays inside the border") {
+  TEST_CASE("exercise-09 a ball at a wall or past it stays inside the border") {
     const gas::TextScreen s = screen();
     INFO(
         "cells beyond the table are not drawn: cell_of keeps every point inside the "
@@ -124,6 +124,24 @@ TEST_SUITE("exercise-09") {
     for (const Cell& cell : gas::ball_image(s, {58.25, 44.5}, 3)) {
       CAPTURE(cell);
       CHECK(s.inside(cell));
+    }
+  }
+
+  TEST_CASE("exercise-09 300 generated balls on screens of every size") {
+    // Screens of 3 to 100 columns and 3 to 40 rows (stage 3's character
+    // screen: a column 1 unit wide, a row 2 tall), centres anywhere on the
+    // table and a little beyond, radii from 0.1 to 12. The numbers are
+    // random, so no cell middle lies on a circle but by a chance too small
+    // to matter.
+    gas::exercises::Draw draw(901);
+    for (int n = 1; n <= 300; ++n) {
+      const gas::TextScreen s =
+          gas::prepare_character_screen(draw.integer(3, 100), draw.integer(3, 40));
+      const double width = s.columns - 2, height = 2.0 * (s.rows - 2);
+      const Point centre{draw.uniform(-1, width + 1), draw.uniform(-1, height + 1)};
+      CAPTURE(n);
+      INFO("a screen of " << s.columns << " x " << s.rows << " characters");
+      if (!check_image(s, centre, draw.magnitude(-1, 1.08))) break;
     }
   }
 }

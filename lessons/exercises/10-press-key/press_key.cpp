@@ -1,7 +1,7 @@
 // Exercise 10 — YOUR press_key (stage 7, model control: the keys).
 //
 // The task: lessons/exercises/10-press-key/instructions.md. The tests:
-// test_press_key.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_press_key.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in stages/stage7_control.cpp.
 // ([[maybe_unused]] only keeps the compiler quiet while the body is a
 // placeholder; delete it when you like.)

@@ -7,10 +7,12 @@
 // The loop's state is a Control (stage 7), set up by start_control from a
 // gas of three balls at T = 2, T0 = 1. The numbers are exact in binary.
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "exercise_test.hpp"
@@ -37,7 +39,7 @@ constexpr int end = static_cast<int>(KeyEffect::end);
 }  // namespace
 
 TEST_SUITE("exercise-10") {
-  EXERCISE_TEST("exercise-10 S stops the model and R runs it again") {
+  TEST_CASE("exercise-10 S stops the model and R runs it again") {
     Control control = three_balls();
     CHECK(effect(control, 'S') == none);
     CHECK(control.stopped);
@@ -45,7 +47,7 @@ TEST_SUITE("exercise-10") {
     CHECK_FALSE(control.stopped);
   }
 
-  EXERCISE_TEST("exercise-10 > doubles T0 and < halves it") {
+  TEST_CASE("exercise-10 > doubles T0 and < halves it") {
     Control control = three_balls();
     CHECK(effect(control, '>') == none);
     CHECK(control.gas.display_step == 2);
@@ -59,7 +61,7 @@ TEST_SUITE("exercise-10") {
     CHECK(control.gas.time == 2);
   }
 
-  EXERCISE_TEST(
+  TEST_CASE(
       "exercise-10 B reverses every velocity at the present time and changes the tone") {
     Control control = three_balls();
     control.must_find_collision = false;
@@ -88,7 +90,7 @@ TEST_SUITE("exercise-10") {
     CHECK(control.gas.balls[0].vx == before[0].vx);
   }
 
-  EXERCISE_TEST("exercise-10 0 asks for a redraw and E ends") {
+  TEST_CASE("exercise-10 0 asks for a redraw and E ends") {
     Control control = three_balls();
     CHECK(effect(control, '0') == redraw);
     CHECK_FALSE(control.ended);
@@ -96,7 +98,7 @@ TEST_SUITE("exercise-10") {
     CHECK(control.ended);
   }
 
-  EXERCISE_TEST("exercise-10 keys work in lower case and other keys do nothing") {
+  TEST_CASE("exercise-10 keys work in lower case and other keys do nothing") {
     Control control = three_balls();
     gas::press_key(control, 's');
     CHECK(control.stopped);
@@ -115,7 +117,7 @@ TEST_SUITE("exercise-10") {
     CHECK_FALSE(quiet.ended);
   }
 
-  EXERCISE_TEST("exercise-10 T0 stays a positive finite number that still moves T") {
+  TEST_CASE("exercise-10 T0 stays a positive finite number that still moves T") {
     Control control = three_balls();
     for (int press = 0; press < 2000; ++press) gas::press_key(control, '>');
     INFO("doubled 2000 times a double overflows to infinity: stop doubling before that");
@@ -130,5 +132,87 @@ TEST_SUITE("exercise-10") {
     CHECK(control.gas.display_step > 0);
     CHECK(control.gas.time + control.gas.display_step > control.gas.time);
     CHECK(control.gas.display_step < 1e-10);
+  }
+
+  TEST_CASE("exercise-10 300 generated runs of keys against a model of the keys") {
+    // A model of what the keys do, kept beside the Control: each run
+    // presses 1 to 40 keys drawn from the ones that do something and some
+    // that do nothing, then the state must be the model's.
+    constexpr char keys[] = "SRBE0<>srbe.x 1";
+    gas::exercises::Draw draw(1001);
+    for (int n = 1; n <= 300; ++n) {
+      Control control = three_balls();
+      control.gas.display_step = draw.magnitude(-3, 3);
+      control.must_find_collision = false;
+      bool stopped = false, ended = false, must_find = false;
+      int tone = 0;
+      double step = control.gas.display_step;
+      std::vector<gas::Ball> balls = control.gas.balls;
+      std::string pressed;
+      bool right = true;
+      CAPTURE(n);
+      for (int k = draw.integer(1, 40); k > 0 && right; --k) {
+        const char key = keys[draw.integer(0, static_cast<int>(sizeof keys) - 2)];
+        pressed += key;
+        int wanted = none;
+        switch (key) {
+          case 'S':
+          case 's':
+            stopped = true;
+            break;
+          case 'R':
+          case 'r':
+            stopped = false;
+            break;
+          case 'B':
+          case 'b': {
+            gas::Gas reversed = control.gas;
+            reversed.balls = balls;
+            gas::reverse_velocities(reversed);
+            balls = reversed.balls;
+            tone = 1 - tone;
+            must_find = true;
+            break;
+          }
+          case 'E':
+          case 'e':
+            ended = true;
+            wanted = end;
+            break;
+          case '0':
+            wanted = redraw;
+            break;
+          case '>':  // T0 stays finite (exercise-10 T0 stays a positive ...)
+            if (std::isfinite(2 * step)) step *= 2;
+            break;
+          case '<':  // ... and a normal number that still moves T
+            if (std::isnormal(step / 2) && 2 + step / 2 > 2) step /= 2;
+            break;
+          default:
+            break;
+        }
+        const int got = effect(control, key);
+        const std::string what = fmt::format("after the keys \"{}\"", pressed);
+        right = CHECK_NUMBER(what + ": press_key's effect (0 none, 1 redraw, 2 end)", got,
+                             wanted, 0) &&
+                CHECK_NUMBER(what + ": T0", control.gas.display_step, step, 0) &&
+                CHECK_NUMBER(what + ": T", control.gas.time, 2, 0) &&
+                CHECK_NUMBER(what + ": stopped", control.stopped, stopped, 0) &&
+                CHECK_NUMBER(what + ": ended", control.ended, ended, 0) &&
+                CHECK_NUMBER(what + ": tone", control.tone, tone, 0) &&
+                CHECK_NUMBER(what + ": must_find_collision", control.must_find_collision,
+                             must_find, 0);
+        for (std::size_t i = 0; i < balls.size() && right; ++i) {
+          const gas::Ball& b = control.gas.balls[i];
+          const std::string ball = fmt::format("{}: ball {} ", what, i + 1);
+          right = CHECK_NUMBER(ball + "x", b.x, balls[i].x, 0) &&
+                  CHECK_NUMBER(ball + "y", b.y, balls[i].y, 0) &&
+                  CHECK_NUMBER(ball + "vx", b.vx, balls[i].vx, 0) &&
+                  CHECK_NUMBER(ball + "vy", b.vy, balls[i].vy, 0) &&
+                  CHECK_NUMBER(ball + "since", b.since, balls[i].since, 0);
+        }
+      }
+      if (!right) break;
+    }
   }
 }

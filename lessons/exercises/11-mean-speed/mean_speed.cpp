@@ -2,7 +2,7 @@
 // suggests printing).
 //
 // The task: lessons/exercises/11-mean-speed/instructions.md. The tests:
-// test_mean_speed.cpp beside this file. Built with -DGAS_EXERCISES=student,
+// test_mean_speed.cpp beside this file. Once you have edited it,
 // this definition stands in for the reference one in stages/stage1_data.cpp.
 // ([[maybe_unused]] only keeps the compiler quiet while the body is a
 // placeholder; delete it when you like.)
