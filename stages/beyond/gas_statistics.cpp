@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "beyond/boltzmann_h.hpp"
+#include "beyond/fluid_structure.hpp"
 
 namespace gas {
 namespace {
@@ -22,6 +24,7 @@ GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
           speed_time - earlier.speed_time,
           push_x - earlier.push_x,
           push_y - earlier.push_y,
+          push_x_middle - earlier.push_x_middle,
           virial - earlier.virial,
           interior_virial - earlier.interior_virial,
           interior_time - earlier.interior_time,
@@ -124,8 +127,13 @@ void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
   // walls of a pair, each (A2 - 2a) or (A1 - 2a) long for the centres,
   // receive 2 |v_normal| (unit mass). A bounce keeps the speed.
   const Ball& first = gas.balls[static_cast<std::size_t>(c.first - 1)];  // N1
-  if (c.kind == CollisionKind::vertical_wall && height_ > 0)
+  if (c.kind == CollisionKind::vertical_wall && height_ > 0) {
     sums_.push_x += 2 * std::abs(first.vx) / (2 * height_);
+    // The middles of these walls, away from the corners (the contact theorem).
+    const double y = centre_at(first, t).y, middle = interior_[3] - interior_[2];
+    if (middle > 0 && y >= interior_[2] && y <= interior_[3])
+      sums_.push_x_middle += 2 * std::abs(first.vx) / (2 * middle);
+  }
   if (c.kind == CollisionKind::horizontal_wall && width_ > 0)
     sums_.push_y += 2 * std::abs(first.vy) / (2 * width_);
   // The flights that end here, and the speeds that change.
@@ -174,6 +182,12 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
     const double value = value_of(static_cast<Quantity>(q), sample);
     if (std::isfinite(value)) blocking_[static_cast<std::size_t>(q)].add(value);
   }
+  // The structure at this moment.
+  const ContactSnapshot snapshot = contact_snapshot(gas, c.time, interior_);
+  if (std::isfinite(snapshot.pair_contact))
+    snapshot_blocking_[pair_contact_q].add(snapshot.pair_contact);
+  if (std::isfinite(snapshot.wall_contact_density))
+    snapshot_blocking_[wall_contact_q].add(kT_ * snapshot.wall_contact_density);
 }
 // [/anchor: collision-sums]
 
@@ -188,6 +202,7 @@ void GasStatistics::start_averages(const Gas& gas) {
   sample_start_ = Sums{};
   sample_collisions_ = 0;
   for (BlockingAnalysis& b : blocking_) b.clear();
+  for (BlockingAnalysis& b : snapshot_blocking_) b.clear();
 }
 
 void GasStatistics::restart(const Gas& gas) {
@@ -225,12 +240,44 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return s.interior_time / t / interior_area_ * std::numbers::pi * radius_ * radius_;
     case collision_rate_q:
       return 2 * static_cast<double>(s.ball_collisions) / (n * t);
+    case wall_middle_pressure_q:
+      return s.push_x_middle / t;
     case quantity_count:
       break;
   }
   return not_known;
 }
 // [/anchor: measured-quantities]
+
+// Where each quantity goes among the figures (a switch, so that the compiler
+// names any quantity left out).
+Average& GasStatistics::average_of(MeasuredFigures& m, Quantity q) {
+  switch (q) {
+    case mean_speed_q:
+      return m.mean_speed;
+    case pressure_q:
+      return m.pressure;
+    case pressure_x_q:
+      return m.pressure_x;
+    case pressure_y_q:
+      return m.pressure_y;
+    case box_z_walls_q:
+      return m.box_z_walls;
+    case box_z_virial_q:
+      return m.box_z_virial;
+    case bulk_z_q:
+      return m.bulk_z;
+    case interior_eta_q:
+      return m.interior_area_fraction;
+    case collision_rate_q:
+      return m.collision_rate;
+    case wall_middle_pressure_q:
+      return m.wall_middle_pressure;
+    case quantity_count:
+      break;
+  }
+  throw std::logic_error("GasStatistics: no such quantity");
+}
 
 MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   MeasuredFigures m;
@@ -246,14 +293,16 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   m.since = start_;
   m.duration = s.duration;
   if (!(s.duration > 0)) return m;
-  Average* averages[quantity_count] = {
-      &m.mean_speed,    &m.pressure,     &m.pressure_x, &m.pressure_y,
-      &m.box_z_walls,   &m.box_z_virial, &m.bulk_z,     &m.interior_area_fraction,
-      &m.collision_rate};
   for (int q = 0; q < quantity_count; ++q) {
-    averages[q]->value = value_of(static_cast<Quantity>(q), s);
-    averages[q]->error = blocking_[static_cast<std::size_t>(q)].error();
+    Average& average = average_of(m, static_cast<Quantity>(q));
+    average.value = value_of(static_cast<Quantity>(q), s);
+    average.error = blocking_[static_cast<std::size_t>(q)].error();
   }
+  // The snapshots' averages.
+  const auto& pair = snapshot_blocking_[pair_contact_q];
+  const auto& wall = snapshot_blocking_[wall_contact_q];
+  m.pair_contact = {pair.mean(), pair.error()};
+  m.wall_contact_pressure = {wall.mean(), wall.error()};
   // The histogram: the ball-time fraction of each bin, to now.
   const double ball_time = s.duration * static_cast<double>(balls_);
   for (std::size_t b = 0; b < bin_count_.size(); ++b) {

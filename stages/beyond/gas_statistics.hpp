@@ -49,18 +49,21 @@ inline constexpr double interior_margin_radii = 8;
 
 // The figures measured since the averages started, as of one moment.
 struct MeasuredFigures {
-  bool warming_up = true;               // the first collisions, left out
-  double since = not_known;             // T at which the averages started
-  double duration = 0;                  // the time averaged over
-  Average mean_speed;                   // of the balls, over time
-  Average pressure;                     // on the walls: their push per time per length
-  Average pressure_x;                   // on the walls x = 0 and x = A1 alone
-  Average pressure_y;                   // on the walls y = 0 and y = A2 alone
-  Average box_z_walls;                  // Z of the box: P A_c / (N kT), from the walls
-  Average box_z_virial;                 // the same from the collision virial
-  Average bulk_z;                       // Z of the interior: P_int / (n_int kT)
-  Average interior_area_fraction;       // eta_int = n_int pi a^2, n_int over time
-  Average collision_rate;               // per ball: 2 (collisions of two balls) / (N t)
+  bool warming_up = true;          // the first collisions, left out
+  double since = not_known;        // T at which the averages started
+  double duration = 0;             // the time averaged over
+  Average mean_speed;              // of the balls, over time
+  Average pressure;                // on the walls: their push per time per length
+  Average pressure_x;              // on the walls x = 0 and x = A1 alone
+  Average pressure_y;              // on the walls y = 0 and y = A2 alone
+  Average box_z_walls;             // Z of the box: P A_c / (N kT), from the walls
+  Average box_z_virial;            // the same from the collision virial
+  Average bulk_z;                  // Z of the interior: P_int / (n_int kT)
+  Average interior_area_fraction;  // eta_int = n_int pi a^2, n_int over time
+  Average collision_rate;          // per ball: 2 (collisions of two balls) / (N t)
+  Average pair_contact;            // g(2a+) among the balls of the interior
+  Average wall_contact_pressure;   // kT n(contact) at the walls x = 0, A1 (their middles)
+  Average wall_middle_pressure;    // the push on those middles: P there
   std::vector<double> speed_fractions;  // the histogram: ball-time fractions per bin
   double bin_width = 0;                 // of its bins
   double fraction_beyond = 0;           // faster than its last bin
@@ -97,6 +100,7 @@ class GasStatistics final : public CollisionObserver {
     double speed_time = 0;       // integral over time of the sum of the speeds
     double push_x = 0;           // 2 |vx| over K = 2, per unit of wall length
     double push_y = 0;           // 2 |vy| over K = 1, per unit of wall length
+    double push_x_middle = 0;    // push_x for bounces with y inside the interior's range
     double virial = 0;           // d . dv over K = 3 (d = r1 - r2 at contact)
     double interior_virial = 0;  // the same, for contacts inside the interior
     double interior_time = 0;    // ball-time spent inside the interior
@@ -114,9 +118,13 @@ class GasStatistics final : public CollisionObserver {
     bulk_z_q,
     interior_eta_q,
     collision_rate_q,
+    wall_middle_pressure_q,
     quantity_count
   };
+  // The quantities measured on snapshots (beyond/fluid_structure.hpp).
+  enum SnapshotQuantity { pair_contact_q, wall_contact_q, snapshot_quantity_count };
   double value_of(Quantity q, const Sums& s) const;
+  static Average& average_of(MeasuredFigures& m, Quantity q);
 
   void start_averages(const Gas& gas);
   Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress
@@ -129,9 +137,9 @@ class GasStatistics final : public CollisionObserver {
   std::size_t balls_ = 0;
   double kT_ = 0;
   double radius_ = 0;
-  double width_ = 0, height_ = 0;  // A1 - 2a, A2 - 2a: the box the centres move in
-  double interior_[4] = {};        // x_min, x_max, y_min, y_max of the interior
-  double interior_area_ = 0;       // of the interior, for its centres
+  double width_ = 0, height_ = 0;     // A1 - 2a, A2 - 2a: the box the centres move in
+  std::array<double, 4> interior_{};  // x_min, x_max, y_min, y_max of the interior
+  double interior_area_ = 0;          // of the interior, for its centres
   double bin_width_ = 0;
   long long collisions_per_sample_ = 1;
 
@@ -153,6 +161,8 @@ class GasStatistics final : public CollisionObserver {
   Sums sample_start_;
   long long sample_collisions_ = 0;
   std::array<BlockingAnalysis, quantity_count> blocking_;
+  // And a snapshot of the structure at the end of each sample.
+  std::array<BlockingAnalysis, snapshot_quantity_count> snapshot_blocking_;
 };
 
 }  // namespace gas

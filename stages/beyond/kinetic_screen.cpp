@@ -23,6 +23,7 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) 
   const double eta = m.interior_area_fraction.value;
   k.bulk_z_theory = hard_disc_fluid_compressibility(eta);
   k.bulk_z_henderson = henderson_compressibility(eta);
+  k.pair_contact_theory = hard_disc_fluid_contact_value(eta);
   const double interior_density = eta / (std::numbers::pi * gas.radius * gas.radius);
   k.pressure_theory = k.bulk_z_theory * interior_density * k.theory.kT;
   k.mean_free_path = m.collision_rate.value > 0
@@ -144,6 +145,10 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       row("Z bulk", "", shown(m.bulk_z), k.bulk_z_theory,
           fmt::format("Henderson {}", shown(k.bulk_z_henderson))),
       row("  eta inside", "", shown(m.interior_area_fraction), t.area_fraction, "N/A"),
+      row("  g(2a) inside", "", shown(m.pair_contact), k.pair_contact_theory,
+          "reference"),
+      row("kT n at walls", "", shown(m.wall_contact_pressure),
+          m.wall_middle_pressure.value, "P there"),
       row("collision rate", "", shown(m.collision_rate), t.collision_rate, "Enskog"),
       row("mean free path", "", shown(k.mean_free_path), t.mean_free_path, "Enskog"),
   };
@@ -162,7 +167,10 @@ std::string csv_header() {
          "Z,Z_error,Z_theory,Z_henderson,eta_interior,eta_interior_error,"
          "Z_box_walls,Z_box_walls_error,Z_box_virial,Z_box_virial_error,"
          "collision_rate,collision_rate_error,collision_rate_theory,"
-         "mean_free_path,mean_free_path_theory,H,averages_since";
+         "mean_free_path,mean_free_path_theory,H,averages_since,"
+         "g_contact,g_contact_error,g_contact_theory,"
+         "wall_contact_pressure,wall_contact_pressure_error,"
+         "wall_middle_pressure,wall_middle_pressure_error";
 }
 
 std::string csv_row(const Figures& f, const KineticFigures& k) {
@@ -197,6 +205,10 @@ std::string csv_row(const Figures& f, const KineticFigures& k) {
   add(t.mean_free_path);
   add(m.h_now);
   add(m.since);
+  add_average(m.pair_contact);
+  add(k.pair_contact_theory);
+  add_average(m.wall_contact_pressure);
+  add_average(m.wall_middle_pressure);
   return fmt::to_string(row);
 }
 

@@ -35,7 +35,8 @@ struct KineticFigures {
   double bulk_z_theory = not_known;     // the reference Z at the interior's eta
   double bulk_z_henderson = not_known;  // Henderson's at the same eta
   double pressure_theory = not_known;   // the reference Z n_int kT: the bulk's pressure
-  double mean_free_path = not_known;    // average mean speed / collision rate
+  double pair_contact_theory = not_known;  // the reference g(2a) at the interior's eta
+  double mean_free_path = not_known;       // average mean speed / collision rate
 };
 
 // The predictions for `gas` and what `statistics` measured, at the gas's T.
