@@ -62,6 +62,7 @@ void carry_out(Control& control, Step& step, std::FILE* trace) {
   const Collision& c = control.next;
   if (control.observer != nullptr) control.observer->before_collision(control.gas, c);
   apply_collision(control.gas, control.limits, c);
+  if (control.observer != nullptr) control.observer->after_collision(control.gas, c);
   control.finder->update(control.gas, c);
   if (c.kind == CollisionKind::balls) {
     ++control.ball_collisions;
@@ -84,7 +85,7 @@ Step take_step(Control& control, double time_limit, std::FILE* trace) {
 
   // Stage 4, if the last step ended on a collision (or a key changed the
   // velocities).
-  if (control.must_find_collision) find_next(control, trace);
+  find_next_collision(control, trace);
 
   // Stage 5: T1 = T0 if no collision is due within the step, else TC - T;
   // never past the time limit.
@@ -103,26 +104,35 @@ Step take_step(Control& control, double time_limit, std::FILE* trace) {
   }
 
   // Stage 5 for the collision, then stage 7: while TC <= T, back to stage 4.
-  if (end.on_collision) {
-    const long long most = most_collisions_at_one_instant(gas.balls.size());
-    long long at_this_instant = 0;
-    while (control.next.kind != CollisionKind::none && control.next.time <= gas.time) {
-      if (++at_this_instant > most) {
-        throw std::runtime_error(
-            fmt::format("at T = {:.17g} more than {} collisions happened at one instant; "
-                        "round-off has "
-                        "trapped the balls and time cannot move on",
-                        gas.time, most));
-      }
-      carry_out(control, step, trace);
-      if (trace != nullptr)
-        fmt::print(trace, "stage 7  model control: TC <= T, back to stage 4\n");
-      find_next(control, trace);
-    }
-  }
+  if (end.on_collision) carry_out_due_collisions(control, step, trace);
   return step;
 }
 // [/anchor: take-step]
+
+void find_next_collision(Control& control, std::FILE* trace) {
+  if (control.must_find_collision) find_next(control, trace);
+}
+
+// [anchor: due-collisions]
+void carry_out_due_collisions(Control& control, Step& step, std::FILE* trace) {
+  const Gas& gas = control.gas;
+  const long long most = most_collisions_at_one_instant(gas.balls.size());
+  long long at_this_instant = 0;
+  while (control.next.kind != CollisionKind::none && control.next.time <= gas.time) {
+    if (++at_this_instant > most) {
+      throw std::runtime_error(
+          fmt::format("at T = {:.17g} more than {} collisions happened at one instant; "
+                      "round-off has "
+                      "trapped the balls and time cannot move on",
+                      gas.time, most));
+    }
+    carry_out(control, step, trace);
+    if (trace != nullptr)
+      fmt::print(trace, "stage 7  model control: TC <= T, back to stage 4\n");
+    find_next(control, trace);
+  }
+}
+// [/anchor: due-collisions]
 
 void trace_decision(const Control& control, std::FILE* trace) {
   fmt::print(trace, "stage 7  model control: TC = {} > T = {}, back to stage 5\n",

@@ -24,13 +24,14 @@
 namespace gas {
 
 // Beyond the article, one narrow hook: an observer is told of each collision
-// just before stage 5 carries it out, with the gas as it was. Kinetic theory
-// adds up the walls' push this way (stages/beyond/, lesson 11); the stages
-// themselves need none.
+// just before stage 5 carries it out, with the gas as it was, and just after,
+// with the new velocities. Kinetic theory keeps its running sums this way
+// (stages/beyond/, lesson 11); the stages themselves need none.
 class CollisionObserver {
  public:
   virtual ~CollisionObserver() = default;
-  virtual void before_collision(const Gas& gas, const Collision& collision) = 0;
+  virtual void before_collision(const Gas& /*gas*/, const Collision& /*collision*/) {}
+  virtual void after_collision(const Gas& /*gas*/, const Collision& /*collision*/) {}
 };
 
 // Everything the control loop keeps between two steps.
@@ -81,6 +82,16 @@ struct Step {
 // goes past `time_limit`. With `trace`, each stage says what it did.
 // Throws std::runtime_error if collisions at one instant never stop.
 Step take_step(Control& control, double time_limit, std::FILE* trace);
+
+// The two halves of take_step's loop, for a loop that takes its pictures
+// elsewhere (stages/beyond/display_steps.hpp):
+// stage 4, if the last step ended on a collision or a key changed the
+// velocities (otherwise the next collision is known already);
+void find_next_collision(Control& control, std::FILE* trace);
+// stage 5 for every collision due at T (TC <= T), stage 7 going back to
+// stage 4 after each. Adds them to `step`. Throws std::runtime_error if
+// collisions at one instant never stop.
+void carry_out_due_collisions(Control& control, Step& step, std::FILE* trace);
 
 // For --trace: stage 7's decision after a step, "TC > T, back to stage 5".
 void trace_decision(const Control& control, std::FILE* trace);

@@ -171,6 +171,13 @@ TEST_SUITE("console") {
     CHECK(gas::parse_options({"--until", "0"}).until == 0);
     CHECK(gas::parse_options({"--help"}).help);
     CHECK(gas::parse_options({"-h"}).help);
+    CHECK(gas::parse_options({}).drawn);
+    CHECK_FALSE(gas::parse_options({"--mode", "none", "--until", "5"}).drawn);
+    CHECK_FALSE(gas::parse_options({}).pictures);
+    CHECK(gas::parse_options({"--pictures", "steps"}).pictures ==
+          gas::PictureRule::display_steps);
+    CHECK(gas::parse_options({"--pictures=collisions"}).pictures ==
+          gas::PictureRule::every_collision);
   }
 
   TEST_CASE(
@@ -183,11 +190,16 @@ TEST_SUITE("console") {
     CHECK(usage_error({"--frames", "-1"}) == "--frames must not be negative, not -1");
     CHECK(usage_error({"--until", "-0.5"}) == "--until must not be negative, not -0.5");
     CHECK(usage_error({"--mode", "fancy"}) ==
-          "--mode takes balls, trails or stats, not 'fancy'");
+          "--mode takes balls, trails, stats or none, not 'fancy'");
     CHECK(usage_error({"--mode", "Balls"}) ==
-          "--mode takes balls, trails or stats, not 'Balls'");
+          "--mode takes balls, trails, stats or none, not 'Balls'");
     CHECK(usage_error({"--frames", "3", "--until", "4"}) ==
           "--frames and --until exclude each other");
+    CHECK(usage_error({"--mode", "none"}) ==
+          "--mode none draws nothing: give it --until or --frames");
+    CHECK(usage_error({"--pictures", "sometimes"}) ==
+          "--pictures takes collisions or steps, not 'sometimes'");
+    CHECK(usage_error({"--pictures"}) == "--pictures needs a value");
     CHECK(usage_error({"--frames", "five"}) ==
           "--frames takes a whole number, not 'five'");
     CHECK(usage_error({"--frames", "5x"}) == "--frames takes a whole number, not '5x'");

@@ -2,7 +2,8 @@
 //
 // - The display step T0 never changes the physics: the same scene with
 //   T0 = 1 and T0 = 0.37 gives bit for bit the same collisions and the same
-//   state at the same model time.
+//   state at the same model time; and so does the picture rule (a picture
+//   at every collision, or only at the display steps).
 // - Time reversal (the B key): forward, B, as long again, B returns a short
 //   run to its start.
 #include <doctest/doctest.h>
@@ -15,6 +16,7 @@
 #include <random>
 #include <vector>
 
+#include "beyond/display_steps.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
@@ -50,12 +52,13 @@ struct Run {
   gas::Control control;
 };
 
-// Runs the gas to model time `end` with display step `display_step`.
-Run run_until(gas::Gas g, double display_step, double end) {
+// Runs the gas to model time `end` with display step `display_step`,
+// pictures taken by `rule`.
+Run run_until(gas::Gas g, double display_step, double end, gas::PictureRule rule) {
   g.display_step = display_step;
   Run run{{}, gas::start_control_for(g)};
   while (run.control.gas.time < end) {
-    const gas::Step step = gas::take_step(run.control, end, nullptr);
+    const gas::Step step = gas::take_step_by(rule, run.control, end, nullptr);
     run.collisions.insert(run.collisions.end(), step.collisions.begin(),
                           step.collisions.end());
   }
@@ -66,24 +69,23 @@ std::uint64_t bits(double x) {
   return std::bit_cast<std::uint64_t>(x);
 }
 
-void check_same_physics(const gas::Gas& g, double end) {
-  const Run coarse = run_until(g, 1.0, end);
-  const Run fine = run_until(g, 0.37, end);
-  REQUIRE(coarse.collisions.size() > 10);  // the comparison means something
-  REQUIRE(coarse.collisions.size() == fine.collisions.size());
-  for (std::size_t i = 0; i < coarse.collisions.size(); ++i) {
-    const gas::Collision& a = coarse.collisions[i];
-    const gas::Collision& b = fine.collisions[i];
+// The same collisions, bit for bit, and the same gas at `end`.
+void check_same_run(const gas::Gas& g, const Run& first, const Run& other, double end) {
+  REQUIRE(first.collisions.size() > 10);  // the comparison means something
+  REQUIRE(first.collisions.size() == other.collisions.size());
+  for (std::size_t i = 0; i < first.collisions.size(); ++i) {
+    const gas::Collision& a = first.collisions[i];
+    const gas::Collision& b = other.collisions[i];
     INFO("collision " << i + 1);
     CHECK(bits(a.time) == bits(b.time));
     CHECK(a.kind == b.kind);
     CHECK(a.first == b.first);
     CHECK(a.second == b.second);
   }
-  CHECK(bits(coarse.control.gas.time) == bits(fine.control.gas.time));
+  CHECK(bits(first.control.gas.time) == bits(other.control.gas.time));
   for (std::size_t i = 0; i < g.balls.size(); ++i) {
-    const gas::Ball& a = coarse.control.gas.balls[i];
-    const gas::Ball& b = fine.control.gas.balls[i];
+    const gas::Ball& a = first.control.gas.balls[i];
+    const gas::Ball& b = other.control.gas.balls[i];
     const gas::Point pa = gas::centre_at(a, end), pb = gas::centre_at(b, end);
     INFO("ball " << i + 1);
     CHECK(bits(pa.x) == bits(pb.x));
@@ -93,15 +95,32 @@ void check_same_physics(const gas::Gas& g, double end) {
   }
 }
 
+// T0 = 1 and T0 = 0.37, under both picture rules: four runs, one physics.
+void check_same_physics(const gas::Gas& g, double end) {
+  using gas::PictureRule;
+  const Run coarse = run_until(g, 1.0, end, PictureRule::every_collision);
+  for (const PictureRule rule :
+       {PictureRule::every_collision, PictureRule::display_steps}) {
+    for (const double display_step : {1.0, 0.37}) {
+      INFO("T0 = " << display_step << ", pictures " << gas::picture_rule_name(rule));
+      check_same_run(g, coarse, run_until(g, display_step, end, rule), end);
+    }
+  }
+}
+
 }  // namespace
 
 TEST_SUITE("end-to-end") {
-  TEST_CASE("T0 never changes the physics: the default scene with T0 = 1 and T0 = 0.37") {
+  TEST_CASE(
+      "T0 never changes the physics: the default scene with T0 = 1 and T0 = 0.37 "
+      "under either picture rule") {
     check_same_physics(gas::parse_scene(gas::default_scene_text, gas::default_scene_name),
                        300);
   }
 
-  TEST_CASE("T0 never changes the physics: 40 random balls with T0 = 1 and T0 = 0.37") {
+  TEST_CASE(
+      "T0 never changes the physics: 40 random balls with T0 = 1 and T0 = 0.37 under "
+      "either picture rule") {
     check_same_physics(random_gas(40, 1989), 100);
   }
 

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -36,7 +37,6 @@ using gas::Average;
 using gas::Control;
 using gas::Gas;
 using gas::GasStatistics;
-using gas::Tallies;
 constexpr double pi = std::numbers::pi;
 
 // side x side balls of radius 1 on a square lattice, in the middle of the
@@ -62,45 +62,44 @@ Gas lattice_gas(int side, double eta, unsigned seed) {
   return g;
 }
 
-// A run of stage 7 with kinetic theory's observer on its hook, as the
-// program runs it: the walls' push added up collision by collision.
+// A run of stage 7 with kinetic theory's statistics on its hook, as the
+// program runs it: every figure kept up to date collision by collision, from
+// the moment start_statistics is called.
 struct ObservedRun {
   Control control;
-  gas::WallPush push;
-  explicit ObservedRun(Gas g) : control(gas::start_control_for(std::move(g))) {
-    control.observer = &push;
-  }
+  std::optional<GasStatistics> statistics;
+  explicit ObservedRun(Gas g) : control(gas::start_control_for(std::move(g))) {}
   ObservedRun(const ObservedRun&) = delete;
   ObservedRun& operator=(const ObservedRun&) = delete;
-  Tallies tallies() const { return gas::tallies(control, push); }
+  GasStatistics& start_statistics(int bins) {
+    statistics.emplace(control.gas, bins);
+    control.observer = &*statistics;
+    return *statistics;
+  }
 };
 
 void run_until(Control& control, double time) {
   while (control.gas.time < time) gas::take_step(control, time, nullptr);
 }
 
-// The measured figures of one run: warm up, then record every `every` time
-// units for `length` time units.
+// The measured figures of one run: warm up, then measure for `length` time
+// units.
 struct Measured {
   double kT = 0;
   Average z, rate;
   double z_from_rate = 0, z_from_rate_error = 0;  // the contact relation
 };
 
-Measured measure_run(int side, double eta, double warm_up, double length, double every,
-                     unsigned seed) {
+Measured measure_run(int side, double eta, double warm_up, double length, unsigned seed) {
   ObservedRun run(lattice_gas(side, eta, seed));
   Control& control = run.control;
   run_until(control, warm_up);
-  GasStatistics statistics(control.gas, run.tallies(), 10);
-  for (double t = warm_up + every; t <= warm_up + length + every / 2; t += every) {
-    run_until(control, t);
-    statistics.record(control.gas, run.tallies());
-  }
+  const GasStatistics& statistics = run.start_statistics(10);
+  run_until(control, warm_up + length);
   Measured m;
   m.kT = gas::kinetic_energy(control.gas) / (side * side);
-  m.z = statistics.compressibility();
-  m.rate = statistics.collision_rate();
+  m.z = statistics.compressibility_at(control.gas.time);
+  m.rate = statistics.collision_rate_at(control.gas.time);
   // Contact relation (lesson 11): Z - 1 = rate * s * sqrt(pi m / kT) / 4.
   const double factor = 2 * control.gas.radius * std::sqrt(pi / m.kT) / 4;
   m.z_from_rate = 1 + factor * m.rate.value;
@@ -132,8 +131,8 @@ void check_equation_of_state(double eta, double length) {
   // the walls' length over the area, ~ 1 / sqrt(N) (lesson 11 measures it at
   // N = 100, 400, 1600), so Z(inf) = Z(400) - (Z(100) - Z(400)) = 2 Z(400) -
   // Z(100), with error sqrt(4 e400^2 + e100^2) from the block errors.
-  const Measured small = measure_run(10, eta, 30, length, 1.0, 7);
-  const Measured large = measure_run(20, eta, 30, length, 1.0, 8);
+  const Measured small = measure_run(10, eta, 30, length, 7);
+  const Measured large = measure_run(20, eta, 30, length, 8);
   const double henderson = gas::henderson_compressibility(eta);
   const double extrapolated = 2 * large.z.value - small.z.value;
   const double error = std::hypot(2 * large.z.error, small.z.error);
@@ -216,14 +215,13 @@ TEST_SUITE("kinetic-theory") {
     g.balls = {{10, 10, 3, 4, 0}};
     ObservedRun run(g);
     Control& control = run.control;
-    GasStatistics statistics(control.gas, run.tallies(), 10);
+    const GasStatistics& statistics = run.start_statistics(10);
     run_until(control, 532);
-    statistics.record(control.gas, run.tallies());
-    CHECK(statistics.compressibility().value == doctest::Approx(1).epsilon(1e-12));
-    CHECK(statistics.pressure().value ==
+    CHECK(statistics.compressibility_at(532).value == doctest::Approx(1).epsilon(1e-12));
+    CHECK(statistics.pressure_at(532).value ==
           doctest::Approx(12.5 / (38.0 * 28.0)).epsilon(1e-12));
-    CHECK(statistics.collision_rate().value == 0);
-    CHECK(statistics.mean_speed().value == doctest::Approx(5));
+    CHECK(statistics.collision_rate_at(532).value == 0);
+    CHECK(statistics.mean_speed_at(532).value == doctest::Approx(5));
   }
 
   TEST_CASE("a gas started at one speed relaxes to the 2D Maxwell-Boltzmann speeds") {
@@ -271,27 +269,24 @@ TEST_SUITE("kinetic-theory") {
 
   TEST_CASE(
       "the time-averaged mean speed of GasStatistics converges to sqrt(pi kT / 2)") {
-    // The screen's own average, recorded every time unit for 600 time units
-    // after 30 to relax; its block error (at least 16 blocks of 18 time units
-    // or more, ~15 collisions of each ball: independent enough) gives the
+    // The screen's own average over 600 time units after 30 to relax; its
+    // block error (some 30000 collisions: at least 16 blocks of 800 or more,
+    // over 10 collisions of each ball a block: independent enough) gives the
     // tolerance, three errors.
     ObservedRun run(lattice_gas(10, 0.3, 5));
     Control& control = run.control;
     run_until(control, 30);
-    GasStatistics statistics(control.gas, run.tallies(), 10);
-    for (int t = 31; t <= 630; ++t) {
-      run_until(control, t);
-      statistics.record(control.gas, run.tallies());
-    }
-    const Average mean = statistics.mean_speed();
+    const GasStatistics& statistics = run.start_statistics(10);
+    run_until(control, 630);
+    const Average mean = statistics.mean_speed_at(630);
     const gas::KineticTheory theory = gas::kinetic_theory(control.gas);
     CAPTURE(mean.value);
     CAPTURE(mean.error);
     REQUIRE(std::isfinite(mean.error));
     CHECK(std::abs(mean.value - theory.mean_speed) <= 3 * mean.error);
     // The histogram's fractions and the fraction beyond make the whole.
-    double sum = statistics.fraction_beyond();
-    for (const double f : statistics.speed_fractions()) sum += f;
+    double sum = statistics.fraction_beyond_at(630);
+    for (const double f : statistics.speed_fractions_at(630)) sum += f;
     CHECK(sum == doctest::Approx(1));
   }
 
@@ -312,8 +307,8 @@ TEST_SUITE("kinetic-theory") {
     // Z(100) - Z_H ~ 0.125 and Z(400) - Z_H ~ 0.06 (lesson 11). Both are
     // positive and the larger gas's is smaller, each beyond three errors;
     // their ratio is near 2 = sqrt(400 / 100), within four errors of it.
-    const Measured small = measure_run(10, 0.5, 30, 1000, 1.0, 11);
-    const Measured large = measure_run(20, 0.5, 30, 1000, 1.0, 12);
+    const Measured small = measure_run(10, 0.5, 30, 1000, 11);
+    const Measured large = measure_run(20, 0.5, 30, 1000, 12);
     const double henderson = gas::henderson_compressibility(0.5);
     const double gap_small = small.z.value - henderson,
                  gap_large = large.z.value - henderson;

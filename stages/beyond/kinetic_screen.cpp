@@ -15,16 +15,16 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) 
           ? 0.0
           : std::sqrt(2 * kinetic_energy(gas) / static_cast<double>(gas.balls.size()));
   k.theory = kinetic_theory(gas);
-  k.average_mean_speed = statistics.mean_speed();
-  k.pressure = statistics.pressure();
-  k.compressibility = statistics.compressibility();
-  k.collision_rate = statistics.collision_rate();
+  k.average_mean_speed = statistics.mean_speed_at(gas.time);
+  k.pressure = statistics.pressure_at(gas.time);
+  k.compressibility = statistics.compressibility_at(gas.time);
+  k.collision_rate = statistics.collision_rate_at(gas.time);
   k.mean_free_path = k.collision_rate.value > 0
                          ? k.average_mean_speed.value / k.collision_rate.value
                          : not_known;
-  k.speed_fractions = statistics.speed_fractions();
+  k.speed_fractions = statistics.speed_fractions_at(gas.time);
   k.bin_width = statistics.bin_width();
-  k.fraction_beyond = statistics.fraction_beyond();
+  k.fraction_beyond = statistics.fraction_beyond_at(gas.time);
   return k;
 }
 

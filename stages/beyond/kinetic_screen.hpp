@@ -38,7 +38,8 @@ struct KineticFigures {
   double fraction_beyond = 0;           // faster than its last bin
 };
 
-// The predictions for `gas` and the averages and histogram of `statistics`.
+// The predictions for `gas` and the averages and histogram of `statistics`,
+// up to the gas's time T.
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics);
 
 // The statistics screen: the figures at fixed places inside the border, each

@@ -12,7 +12,7 @@ namespace {
 
 // Blocks for the errors: at most this many are kept; when they are full,
 // neighbours are merged in pairs and each new block takes twice as many
-// records. The error is given once there are at least `fewest_blocks`.
+// collisions. The error is given once there are at least `fewest_blocks`.
 constexpr std::size_t most_blocks = 32;
 constexpr std::size_t fewest_blocks = 8;
 
@@ -81,103 +81,142 @@ KineticTheory kinetic_theory(const Gas& gas) {
   return t;
 }
 
-void WallPush::before_collision(const Gas& gas, const Collision& c) {
-  const Ball& first = gas.balls[static_cast<std::size_t>(c.first - 1)];  // N1
-  if (c.kind == CollisionKind::horizontal_wall) horizontal += 2 * std::abs(first.vy);
-  if (c.kind == CollisionKind::vertical_wall) vertical += 2 * std::abs(first.vx);
-}
-
-Tallies tallies(const Control& control, const WallPush& push) {
-  return {control.gas.time, push.horizontal, push.vertical, control.ball_collisions};
-}
-
 void GasStatistics::Sums::add(const Sums& other) {
   duration += other.duration;
-  mean_speed_time += other.mean_speed_time;
+  speed_time += other.speed_time;
   push += other.push;
   ball_collisions += other.ball_collisions;
 }
 
-GasStatistics::GasStatistics(const Gas& gas, const Tallies& now, int bins)
+GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
+  return {duration - earlier.duration, speed_time - earlier.speed_time,
+          push - earlier.push, ball_collisions - earlier.ball_collisions};
+}
+
+GasStatistics::GasStatistics(const Gas& gas, int bins)
     : balls_(gas.balls.size()),
       width_(gas.width - 2 * gas.radius),
       height_(gas.height - 2 * gas.radius),
-      last_(now) {
+      start_(gas.time),
+      last_time_(gas.time) {
   kT_ = balls_ > 0 ? kinetic_energy(gas) / static_cast<double>(balls_) : 0.0;
   const int count = std::max(bins, 1);
   bin_width_ = histogram_range * std::sqrt(2 * kT_) / count;
-  speed_time_.assign(static_cast<std::size_t>(count), 0.0);
-  record(gas, now);  // takes the first speeds; adds no time
+  // One entry per bin and one for the speeds beyond the last.
+  bin_count_.assign(static_cast<std::size_t>(count) + 1, 0);
+  bin_time_.assign(bin_count_.size(), 0.0);
+  bin_since_.assign(bin_count_.size(), start_);
+  for (const Ball& ball : gas.balls) put_in(ball, start_);
+  // A block of about one collision per ball to begin with (lesson 11).
+  collisions_per_block_ = std::max<long long>(1, static_cast<long long>(balls_));
 }
 
-void GasStatistics::record(const Gas& gas, const Tallies& now) {
-  Sums step;
-  step.duration = now.time - last_.time;
-  // The speeds held since the last record.
-  step.mean_speed_time = last_mean_speed_ * step.duration;
-  for (const int bin : last_bin_) {
-    if (bin < bins()) {
-      speed_time_[static_cast<std::size_t>(bin)] += step.duration;
-    } else {
-      beyond_time_ += step.duration;
-    }
-  }
-  // The wall push, weighted so that push / duration is the pressure: half
-  // the push on the two walls x = 0, x = A1 per unit of their length A2 - 2a
-  // plus the same for y, averaged over the two directions (lesson 11).
+int GasStatistics::bin_of(double speed) const {
+  const double bin = bin_width_ > 0 ? std::floor(speed / bin_width_) : 0.0;
+  return static_cast<int>(std::min(bin, static_cast<double>(bins())));
+}
+
+void GasStatistics::take_out(const Ball& ball, double time) {
+  const double speed = std::hypot(ball.vx, ball.vy);
+  speed_sum_ -= speed;
+  const auto b = static_cast<std::size_t>(bin_of(speed));
+  bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
+  bin_since_[b] = time;
+  --bin_count_[b];
+}
+
+void GasStatistics::put_in(const Ball& ball, double time) {
+  const double speed = std::hypot(ball.vx, ball.vy);
+  speed_sum_ += speed;
+  const auto b = static_cast<std::size_t>(bin_of(speed));
+  bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
+  bin_since_[b] = time;
+  ++bin_count_[b];
+}
+
+// [anchor: wall-push]
+void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
+  // The sums up to TC, with the speeds held until then.
+  const double t = c.time;
+  sums_.duration += t - last_time_;
+  sums_.speed_time += speed_sum_ * (t - last_time_);
+  last_time_ = t;
+  // A bounce reverses the velocity's component across the wall: the wall
+  // receives 2 |v_normal| (unit mass). Weighted so that push / duration is
+  // the pressure: per unit length of the walls it hits (two walls of length
+  // A2 - 2a for K = 2, of A1 - 2a for K = 1), averaged over the two
+  // directions (lesson 11). A bounce keeps the speed.
+  const Ball& first = gas.balls[static_cast<std::size_t>(c.first - 1)];  // N1
   if (width_ > 0 && height_ > 0) {
-    step.push = (now.vertical_wall_push - last_.vertical_wall_push) / (4 * height_) +
-                (now.horizontal_wall_push - last_.horizontal_wall_push) / (4 * width_);
+    if (c.kind == CollisionKind::horizontal_wall)
+      sums_.push += 2 * std::abs(first.vy) / (4 * width_);
+    if (c.kind == CollisionKind::vertical_wall)
+      sums_.push += 2 * std::abs(first.vx) / (4 * height_);
   }
-  step.ball_collisions = now.ball_collisions - last_.ball_collisions;
-  last_ = now;
-
-  // The speeds from now on.
-  last_bin_.resize(gas.balls.size());
-  double speed_sum = 0;
-  for (std::size_t i = 0; i < gas.balls.size(); ++i) {
-    const double speed = std::hypot(gas.balls[i].vx, gas.balls[i].vy);
-    speed_sum += speed;
-    const double bin = bin_width_ > 0 ? std::floor(speed / bin_width_) : 0.0;
-    last_bin_[i] = static_cast<int>(std::min(bin, static_cast<double>(bins())));
+  if (c.kind == CollisionKind::balls) {
+    take_out(first, t);
+    take_out(gas.balls[static_cast<std::size_t>(c.second - 1)], t);  // N2
   }
-  last_mean_speed_ = balls_ > 0 ? speed_sum / static_cast<double>(balls_) : 0.0;
+}
+// [/anchor: wall-push]
 
-  if (step.duration <= 0 && step.push == 0 && step.ball_collisions == 0) return;
-  total_.add(step);
-  block_.add(step);
-  if (++block_records_ == records_per_block_) {
-    blocks_.push_back(block_);
-    block_ = Sums{};
-    block_records_ = 0;
-    if (blocks_.size() == most_blocks) {  // merge pairs: half as many, twice as long
-      for (std::size_t i = 0; i < most_blocks / 2; ++i) {
-        blocks_[i] = blocks_[2 * i];
-        blocks_[i].add(blocks_[2 * i + 1]);
-      }
-      blocks_.resize(most_blocks / 2);
-      records_per_block_ *= 2;
+void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
+  const double t = c.time;
+  if (c.kind == CollisionKind::balls) {
+    put_in(gas.balls[static_cast<std::size_t>(c.first - 1)], t);
+    put_in(gas.balls[static_cast<std::size_t>(c.second - 1)], t);
+    ++sums_.ball_collisions;
+  }
+  // Every N collisions the sum of the speeds is added up afresh, so that the
+  // round-off of taking out and putting in never accumulates (one pass over
+  // the balls per N collisions: a few operations per collision on average).
+  if (++collisions_ % static_cast<long long>(std::max<std::size_t>(balls_, 1)) == 0) {
+    speed_sum_ = 0;
+    for (const Ball& ball : gas.balls) speed_sum_ += std::hypot(ball.vx, ball.vy);
+  }
+  // A block ends after collisions_per_block_ collisions.
+  if (++block_collisions_ < collisions_per_block_) return;
+  blocks_.push_back(sums_.minus(block_start_));
+  block_start_ = sums_;
+  block_collisions_ = 0;
+  if (blocks_.size() == most_blocks) {  // merge pairs: half as many, twice as long
+    for (std::size_t i = 0; i < most_blocks / 2; ++i) {
+      blocks_[i] = blocks_[2 * i];
+      blocks_[i].add(blocks_[2 * i + 1]);
     }
+    blocks_.resize(most_blocks / 2);
+    collisions_per_block_ *= 2;
   }
+}
+
+GasStatistics::Sums GasStatistics::sums_at(double now) const {
+  Sums s = sums_;
+  s.duration += now - last_time_;
+  s.speed_time += speed_sum_ * (now - last_time_);
+  return s;
 }
 
 // The time average of a quantity q = (a sum) / duration, over everything
-// recorded; its error from the spread of the finished blocks' averages: for
-// B blocks of durations w_b and averages q_b, the standard error of the
-// weighted mean, sqrt(B / (B - 1) * sum w_b^2 (q_b - q)^2) / sum w_b. The
-// blocks must be longer than the time over which q stays correlated; blocks
-// that grow with the run ensure it in the end (lesson 11).
-Average GasStatistics::average(double (*of)(const Sums&, const GasStatistics&)) const {
+// since the start; its error from the spread of the finished blocks'
+// averages: for B blocks of durations w_b and averages q_b, the standard
+// error of the weighted mean, sqrt(B / (B - 1) * sum w_b^2 (q_b - q)^2) /
+// sum w_b. The blocks must be longer than the time over which q stays
+// correlated; blocks that grow with the run ensure it in the end (lesson 11).
+Average GasStatistics::average(double now,
+                               double (*of)(const Sums&, const GasStatistics&)) const {
   Average result;
-  if (total_.duration <= 0) return result;
-  result.value = of(total_, *this);
+  const Sums total = sums_at(now);
+  if (total.duration <= 0) return result;
+  result.value = of(total, *this);
   if (blocks_.size() < fewest_blocks) return result;
   Sums finished;
-  for (const Sums& b : blocks_) finished.add(b);
+  for (const Sums& b : blocks_) {
+    if (b.duration <= 0) return result;
+    finished.add(b);
+  }
   const double mean = of(finished, *this);
   double spread = 0;
   for (const Sums& b : blocks_) {
-    if (b.duration <= 0) return result;
     const double deviation = of(b, *this) - mean;
     spread += b.duration * b.duration * deviation * deviation;
   }
@@ -186,41 +225,50 @@ Average GasStatistics::average(double (*of)(const Sums&, const GasStatistics&)) 
   return result;
 }
 
-Average GasStatistics::mean_speed() const {
-  return average(
-      [](const Sums& s, const GasStatistics&) { return s.mean_speed_time / s.duration; });
+Average GasStatistics::mean_speed_at(double now) const {
+  return average(now, [](const Sums& s, const GasStatistics& g) {
+    return s.speed_time / (s.duration * static_cast<double>(g.balls_));
+  });
 }
 
-Average GasStatistics::pressure() const {
-  return average([](const Sums& s, const GasStatistics&) { return s.push / s.duration; });
+Average GasStatistics::pressure_at(double now) const {
+  return average(now,
+                 [](const Sums& s, const GasStatistics&) { return s.push / s.duration; });
 }
 
-Average GasStatistics::compressibility() const {
-  return average([](const Sums& s, const GasStatistics& g) {
+Average GasStatistics::compressibility_at(double now) const {
+  return average(now, [](const Sums& s, const GasStatistics& g) {
     const double balls = static_cast<double>(g.balls_);
     return s.push / s.duration * g.width_ * g.height_ / (balls * g.kT_);
   });
 }
 
-Average GasStatistics::collision_rate() const {
-  return average([](const Sums& s, const GasStatistics& g) {
+Average GasStatistics::collision_rate_at(double now) const {
+  return average(now, [](const Sums& s, const GasStatistics& g) {
     return 2 * static_cast<double>(s.ball_collisions) /
            (static_cast<double>(g.balls_) * s.duration);
   });
 }
 
-std::vector<double> GasStatistics::speed_fractions() const {
-  std::vector<double> fractions(speed_time_.size(), 0.0);
-  const double ball_time = total_.duration * static_cast<double>(balls_);
+std::vector<double> GasStatistics::speed_fractions_at(double now) const {
+  std::vector<double> fractions(static_cast<std::size_t>(bins()), 0.0);
+  const double ball_time = duration_at(now) * static_cast<double>(balls_);
   if (ball_time <= 0) return fractions;
-  for (std::size_t i = 0; i < fractions.size(); ++i)
-    fractions[i] = speed_time_[i] / ball_time;
+  for (std::size_t b = 0; b < fractions.size(); ++b) {
+    fractions[b] =
+        (bin_time_[b] + static_cast<double>(bin_count_[b]) * (now - bin_since_[b])) /
+        ball_time;
+  }
   return fractions;
 }
 
-double GasStatistics::fraction_beyond() const {
-  const double ball_time = total_.duration * static_cast<double>(balls_);
-  return ball_time > 0 ? beyond_time_ / ball_time : 0.0;
+double GasStatistics::fraction_beyond_at(double now) const {
+  const double ball_time = duration_at(now) * static_cast<double>(balls_);
+  const std::size_t b = bin_count_.size() - 1;
+  return ball_time > 0 ? (bin_time_[b] +
+                          static_cast<double>(bin_count_[b]) * (now - bin_since_[b])) /
+                             ball_time
+                       : 0.0;
 }
 
 }  // namespace gas

@@ -5,9 +5,9 @@
 // table and the energy alone, what kinetic theory says the gas should show —
 // the 2D Maxwell-Boltzmann speeds, the pressure of a hard-disk fluid, the
 // collision rate and the mean free path — and keeps the measured figures the
-// screen sets beside them: the push on the walls (fed by stage 7's one hook,
-// CollisionObserver), a speed histogram, and time averages with their
-// statistical errors.
+// screen sets beside them: the push on the walls, a speed histogram, and time
+// averages with their statistical errors, all fed collision by collision
+// through stage 7's one hook, CollisionObserver.
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas, the mean speed for example"). The theory is beyond
 // the article.
@@ -63,31 +63,6 @@ double henderson_contact_value(double area_fraction);
 // has P * area = N kT exactly, walls and all (lesson 11).
 double measured_area(const Gas& gas);
 
-// The momentum the walls have received (unit mass), added up collision by
-// collision through stage 7's hook: a bounce reverses the velocity's
-// component across the wall, so the wall receives 2 |v_normal|.
-// [anchor: wall-push]
-class WallPush final : public CollisionObserver {
- public:
-  void before_collision(const Gas& gas, const Collision& collision) override;
-  double horizontal = 0;  // K = 1: the sum of 2 |vy| (walls y = 0, y = A2)
-  double vertical = 0;    // K = 2: the sum of 2 |vx| (walls x = 0, x = A1)
-};
-// [/anchor: wall-push]
-
-// What has been counted since the start: the momentum given to the walls
-// and the collisions of two balls (unit mass).
-struct Tallies {
-  double time = 0;                  // T
-  double horizontal_wall_push = 0;  // sum of 2 |vy| over K = 1 (walls y = 0, y = A2)
-  double vertical_wall_push = 0;    // sum of 2 |vx| over K = 2 (walls x = 0, x = A1)
-  long long ball_collisions = 0;    // K = 3
-};
-
-// The tallies of a run: stage 7's clock and count of K = 3, and the push that
-// `push`, its observer, has added up.
-Tallies tallies(const Control& control, const WallPush& push);
-
 // A time average and its statistical error (one standard error, from block
 // averages); the error is not known (NaN) before there are enough blocks.
 struct Average {
@@ -96,60 +71,81 @@ struct Average {
 };
 
 // The figures measured over a run, from the moment this object is made:
-// time averages, taken step by step (`record` after every display step, or
-// at any moments one likes), and the histogram of speeds.
-class GasStatistics {
+// time averages of the speeds, of the push on the walls and of the
+// collisions, and the histogram of speeds. It is kept up to date through
+// stage 7's hook (Control::observer = &statistics), with a few operations at
+// each collision whatever the number of balls: each figure is a running sum
+// that a collision changes only for the one or two balls it concerns. So the
+// figures do not depend on when pictures are taken, and reading them at any
+// moment (the *_at functions) walks no ball.
+class GasStatistics final : public CollisionObserver {
  public:
   // Speeds are counted in `bins` equal bins from 0 to 2.5 v_rms (v_rms of the
-  // gas as it is now; the energy does not change); faster ones apart.
-  GasStatistics(const Gas& gas, const Tallies& now, int bins);
+  // gas as it is now; the energy does not change); faster ones apart. The
+  // averages start at the gas's time T.
+  GasStatistics(const Gas& gas, int bins);
 
-  // Adds the time from the last call to now. The speeds counted for it are
-  // those the balls had at the last call: the state after its collisions,
-  // which lasted until the next one (so each speed counts for as long as it
-  // was held, and recording on every collision biases nothing).
-  void record(const Gas& gas, const Tallies& now);
+  // Stage 7's hook: the speeds of the balls that collide are taken out of
+  // the sums at TC, and their new speeds put in; a wall receives its push.
+  void before_collision(const Gas& gas, const Collision& collision) override;
+  void after_collision(const Gas& gas, const Collision& collision) override;
 
-  double duration() const { return total_.duration; }
-  // Time averages since the start.
-  Average mean_speed() const;
-  Average pressure() const;         // wall push per time per unit length of wall
-  Average compressibility() const;  // P * measured_area / (N kT)
-  Average collision_rate() const;   // per ball: 2 * (collisions of two balls) / (N t)
+  // Time averages from the start to the moment `now` (no earlier than the
+  // last collision).
+  double duration_at(double now) const { return now - start_; }
+  Average mean_speed_at(double now) const;
+  Average pressure_at(double now) const;         // wall push per time per unit length
+  Average compressibility_at(double now) const;  // P * measured_area / (N kT)
+  Average collision_rate_at(double now) const;   // per ball: 2 (ball collisions) / (N t)
 
-  // The histogram: for each bin the fraction of ball-time spent at speeds in
-  // it; with the fraction beyond the last bin, the fractions sum to 1.
-  int bins() const { return static_cast<int>(speed_time_.size()); }
+  // The histogram at `now`: for each bin the fraction of ball-time spent at
+  // speeds in it; with the fraction beyond the last bin, they sum to 1.
+  int bins() const { return static_cast<int>(bin_count_.size()) - 1; }
   double bin_width() const { return bin_width_; }
-  std::vector<double> speed_fractions() const;
-  double fraction_beyond() const;
+  std::vector<double> speed_fractions_at(double now) const;
+  double fraction_beyond_at(double now) const;
 
  private:
-  // The sums over a stretch of time; a block is a run of records.
+  // Sums from the start up to a moment.
   struct Sums {
     double duration = 0;
-    double mean_speed_time = 0;  // integral of the mean speed over time
-    double push = 0;             // wall push, weighted per unit length (below)
+    double speed_time = 0;  // integral over time of the sum of the speeds
+    double push = 0;        // wall push, weighted per unit length (below)
     long long ball_collisions = 0;
     void add(const Sums& other);
+    Sums minus(const Sums& earlier) const;  // the sums between `earlier` and these
   };
-  Average average(double (*of)(const Sums&, const GasStatistics&)) const;
+  Sums sums_at(double now) const;  // the sums up to `now`
+  Average average(double now, double (*of)(const Sums&, const GasStatistics&)) const;
+  int bin_of(double speed) const;                // bins() for the faster ones
+  void take_out(const Ball& ball, double time);  // a ball's speed leaves the sums
+  void put_in(const Ball& ball, double time);    // and comes back, new
 
   std::size_t balls_ = 0;
   double kT_ = 0;
   double width_ = 0;   // A1 - 2a
   double height_ = 0;  // A2 - 2a
+  double start_ = 0;   // T when the averages started
   double bin_width_ = 0;
-  Tallies last_;
-  double last_mean_speed_ = 0;
-  std::vector<int> last_bin_;       // each ball's bin at the last record
-  std::vector<double> speed_time_;  // ball-time spent in each bin
-  double beyond_time_ = 0;          // ball-time faster than the last bin
-  Sums total_;
-  Sums block_;                   // the block being filled
-  long long block_records_ = 0;  // records in it
-  long long records_per_block_ = 1;
-  std::vector<Sums> blocks_;  // finished blocks, all of records_per_block_
+
+  // The running sums, as of the last collision.
+  Sums sums_;                 // duration and speed_time up to last_time_
+  double last_time_ = 0;      // the moment of the last collision
+  double speed_sum_ = 0;      // the sum of the speeds since then
+  long long collisions_ = 0;  // all kinds, to refresh speed_sum_ (below)
+  // The histogram: for each bin (and beyond, the last entry) the balls in it
+  // now, and the ball-time it has held up to the moment it last changed.
+  std::vector<long long> bin_count_;
+  std::vector<double> bin_time_;
+  std::vector<double> bin_since_;
+
+  // Blocks for the errors: the sums at the start of the block being filled,
+  // and the finished blocks' own sums. A block is a run of collisions, so
+  // that the blocks too are the same whenever pictures are taken.
+  Sums block_start_;
+  long long block_collisions_ = 0;  // in the block being filled
+  long long collisions_per_block_ = 1;
+  std::vector<Sums> blocks_;
 };
 
 }  // namespace gas

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "beyond/display_steps.hpp"
 #include "beyond/kinetic_screen.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
@@ -63,7 +64,8 @@ std::optional<long long> frame_limit(const Options& options, bool terminal) {
 // article's variables with their values, where the scene was read from, the
 // limits G1 and G2 of the centres, and the screen.
 void trace_preparation(const Control& control, const std::string& scene_name,
-                       const TextScreen& screen, ScreenMode mode) {
+                       const TextScreen& screen, ScreenMode mode, bool drawn,
+                       PictureRule rule) {
   const Gas& gas = control.gas;
   const CentreLimits& limits = control.limits;  // stage 3's, kept by stage 7
   const std::size_t n = gas.balls.size();
@@ -75,11 +77,19 @@ void trace_preparation(const Control& control, const std::string& scene_name,
       limits.x_min, limits.x_max, limits.y_max);
   fmt::print("stage 3  screen preparation: {} x {} characters, border included\n",
              screen.columns, screen.rows);
-  if (mode == ScreenMode::stats) {
+  if (!drawn) {
+    fmt::print("stage 3  screen preparation: nothing drawn (--mode none)\n");
+  } else if (mode == ScreenMode::stats) {
     fmt::print("stage 3  screen preparation: figures only, no table\n");
   } else {
     fmt::print("stage 3  screen preparation: column {}, row {}\n", screen.column_width,
                screen.row_height);
+  }
+  // The article's loop needs no word; the other rule does.
+  if (rule == PictureRule::display_steps) {
+    fmt::print(
+        "stage 7  model control: pictures only at T + T0, not at the collisions "
+        "between\n");
   }
 }
 
@@ -89,44 +99,18 @@ Figures figures_of(const Control& control) {
                  control.ball_collisions);
 }
 
-// Beyond the article (lesson 11): kinetic theory's figures for the statistics
-// screen and --csv, with their time averages since the start. All that the
-// program asks of kinetic theory is asked here; it hears of each collision
-// through stage 7's one hook.
-class Measurements {
- public:
-  // The averages start now; a histogram bin for every two columns, at most 40.
-  // (`control` keeps a pointer to this object's WallPush: made in place,
-  // never moved.)
-  Measurements(Control& control, int columns)
-      : statistics_(control.gas, tallies(control, push_),
-                    std::clamp(columns / 2 - 2, 1, 40)) {
-    control.observer = &push_;
-  }
-  Measurements(const Measurements&) = delete;
-  Measurements& operator=(const Measurements&) = delete;
-
-  // After a display step: adds the time since the last one.
-  void record(const Control& control) {
-    statistics_.record(control.gas, tallies(control, push_));
-  }
-
-  // Kinetic theory's figures now, the averages included.
-  KineticFigures figures(const Control& control) const {
-    return kinetic_figures(control.gas, statistics_);
-  }
-
- private:
-  WallPush push_;  // the walls' push, told of each collision by stage 7
-  GasStatistics statistics_;
-};
+// The statistics screen's histogram: a bin for every two columns, at most 40.
+int histogram_bins(int columns) {
+  return std::clamp(columns / 2 - 2, 1, 40);
+}
 
 // One run of the program: stage 7's loop, with stage 6 drawing every step.
 class ConsoleRun {
  public:
   ConsoleRun(const Options& options, Gas gas)
       : options_(options),
-        terminal_(is_terminal(1) && !options.trace),
+        terminal_(is_terminal(1) && !options.trace && options.drawn),
+        rule_(options.pictures.value_or(picture_rule_for(gas.balls.size()))),
         keyboard_(terminal_ && is_terminal(0) && !options.keys && !options.step),
         control_(start_control_for(std::move(gas), options.strategy)),
         display_(stdout, terminal_, terminal_ && std::getenv("NO_COLOR") == nullptr),
@@ -135,9 +119,12 @@ class ConsoleRun {
         outputs_(options, display_),
         screen_(prepare()) {
     // Kinetic theory only for a run that shows or writes its figures: the
-    // statistics screen or --csv. (Its record walks every ball each step.)
-    if (options.mode == ScreenMode::stats || options.csv_path)
-      measurements_.emplace(control_, grid_.columns);
+    // statistics screen or --csv. It hears of each collision through stage
+    // 7's one hook (`statistics_` is made in place and never moves).
+    if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path) {
+      statistics_.emplace(control_.gas, histogram_bins(grid_.columns));
+      control_.observer = &*statistics_;
+    }
     // Drawn in place: the frame fits the window, and fits it again when it
     // changes size (resize()).
     if (const auto size = terminal_size(); terminal_ && size)
@@ -149,7 +136,10 @@ class ConsoleRun {
   // 4 and 5 take one display step (back to stage 4 at every collision); then
   // stage 6 draws it. Returns the exit status.
   int run() {
-    if (options_.trace) trace_preparation(control_, scene_name(), screen_, options_.mode);
+    if (options_.trace) {
+      trace_preparation(control_, scene_name(), screen_, options_.mode, options_.drawn,
+                        rule_);
+    }
     install_interrupt_flag();  // Ctrl-C, SIGTERM, SIGHUP: end the run as E would
     KeySource keys(options_, keyboard_);
     std::FILE* const trace = options_.trace ? stdout : nullptr;
@@ -170,18 +160,23 @@ class ConsoleRun {
         break;  // nothing could start the model again
       }
 
-      // Stages 4 and 5 (and stage 7 going back to stage 4 at a collision).
-      const Step step = take_step(control_, options_.until.value_or(never), trace);
+      // Stages 4 and 5 (and stage 7 going back to stage 4 at a collision), up
+      // to the next picture: the first collision, or T + T0 (the rule).
+      const Step step =
+          take_step_by(rule_, control_, options_.until.value_or(never), trace);
       ++frames_done;
-      const Figures figures = figures_of(control_);
-      std::optional<KineticFigures> kinetic;  // worked out once, for both uses
-      if (measurements_) {
-        measurements_->record(control_);
-        kinetic = measurements_->figures(control_);
-      }
       outputs_.record(step);
-      if (kinetic && outputs_.writes_csv()) outputs_.write_csv(figures, *kinetic);
-      show(figures, kinetic ? &*kinetic : nullptr, !step.collisions.empty());  // stage 6
+      // The picture and its figures (each a pass over the balls).
+      if (options_.drawn || outputs_.writes_csv()) {
+        const Figures figures = figures_of(control_);
+        std::optional<KineticFigures> kinetic;  // worked out once, for both uses
+        if (statistics_) kinetic = kinetic_figures(control_.gas, *statistics_);
+        if (kinetic && outputs_.writes_csv()) outputs_.write_csv(figures, *kinetic);
+        if (options_.drawn) {
+          show(figures, kinetic ? &*kinetic : nullptr,
+               rule_ == PictureRule::every_collision && !step.collisions.empty());
+        }
+      }
       if (!keys.wait_after_step(step.length / control_.gas.display_step)) break;
     }
     // However the run ends: the terminal put back, the files closed whole.
@@ -275,8 +270,9 @@ class ConsoleRun {
         draw_trails(screen_, control_.picture, tone);
         break;
       case ScreenMode::stats:
-        draw_kinetic_figures(screen_, figures,
-                             kinetic ? *kinetic : measurements_->figures(control_));
+        draw_kinetic_figures(
+            screen_, figures,
+            kinetic ? *kinetic : kinetic_figures(control_.gas, *statistics_));
         break;
     }
     display_.show(screen_, status_line(figures, options_.mode, control_.stopped), tone);
@@ -284,14 +280,15 @@ class ConsoleRun {
   }
 
   const Options& options_;
-  bool terminal_;  // frames drawn in place on a terminal, not printed whole
-  bool keyboard_;  // keys typed live on the keyboard
+  bool terminal_;     // frames drawn in place on a terminal, not printed whole
+  PictureRule rule_;  // pictures at every collision, or at display steps only
+  bool keyboard_;     // keys typed live on the keyboard
   Control control_;
   Display display_;
   GridSize grid_;
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
-  std::optional<Measurements> measurements_;  // for --mode stats and --csv only
+  std::optional<GasStatistics> statistics_;  // for --mode stats and --csv only
   TextScreen screen_;
 };
 

@@ -1,7 +1,7 @@
 // Where the keys of each tick come from. See key_source.hpp.
 #include "program/key_source.hpp"
 
-#include <cmath>
+#include <chrono>
 #include <iostream>
 #include <utility>
 
@@ -18,7 +18,9 @@ constexpr int stopped_wait_ms = 100;
 }  // namespace
 
 KeySource::KeySource(const Options& options, bool keyboard)
-    : script_(options.keys), enter_lines_(options.step) {
+    : script_(options.keys),
+      enter_lines_(options.step),
+      next_frame_(std::chrono::steady_clock::now()) {
   if (keyboard) keyboard_.emplace();
 }
 
@@ -40,7 +42,16 @@ bool KeySource::wait_while_stopped() {
 bool KeySource::wait_after_step(double share_of_frame) {
   if (enter_lines_ && !read_enter_line()) return false;
   if (keyboard_) {
-    const long wait_ms = std::lround(1000 * frame_seconds * share_of_frame);
+    // The frame's moment on a steady clock: its share of a frame after the
+    // last one, so that the time spent computing and drawing counts as part
+    // of the wait. A frame that took longer than its share starts the clock
+    // afresh (no hurrying to catch up).
+    using namespace std::chrono;
+    const auto now = steady_clock::now();
+    next_frame_ += duration_cast<steady_clock::duration>(
+        duration<double>(frame_seconds * share_of_frame));
+    if (next_frame_ < now) next_frame_ = now;
+    const auto wait_ms = duration_cast<milliseconds>(next_frame_ - now).count();
     pending_ += keyboard_->poll(static_cast<int>(wait_ms));
   }
   return true;

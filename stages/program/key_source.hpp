@@ -8,6 +8,7 @@
 // Lesson: lessons/7-model-control.md ("Keys in a terminal, and keys in a script")
 #pragma once
 
+#include <chrono>
 #include <optional>
 #include <string>
 
@@ -40,7 +41,8 @@ class KeySource {
   bool wait_while_stopped();
 
   // After a display step of `share_of_frame` frames (its T1 / T0): --step
-  // waits for Enter, and the keyboard waits out the step's share of a frame,
+  // waits for Enter, and the keyboard waits until the step's share of a
+  // frame has passed since the last frame (computing and drawing included),
   // keeping the keys typed meanwhile. False at the end of --step's input.
   bool wait_after_step(double share_of_frame);
 
@@ -54,6 +56,7 @@ class KeySource {
   bool enter_lines_ = false;           // --step
   std::optional<RawKeys> keyboard_;
   std::string pending_;  // keys pressed and not yet carried out
+  std::chrono::steady_clock::time_point next_frame_;  // when the next frame is due
 };
 
 }  // namespace gas

@@ -117,9 +117,11 @@ void read_until(ArgumentReader& reader, Options& options) {
   options.until = until;
 }
 
-// --mode M: one of the three screens of stage 6.
+// --mode M: one of the three screens of stage 6, or none.
 void read_mode(ArgumentReader& reader, Options& options) {
   const std::string name = reader.value();
+  options.drawn = name != "none";
+  if (!options.drawn) return;
   for (const ScreenMode mode :
        {ScreenMode::balls, ScreenMode::trails, ScreenMode::stats}) {
     if (name == mode_name(mode)) {
@@ -127,7 +129,8 @@ void read_mode(ArgumentReader& reader, Options& options) {
       return;
     }
   }
-  throw UsageError(fmt::format("--mode takes balls, trails or stats, not '{}'", name));
+  throw UsageError(
+      fmt::format("--mode takes balls, trails, stats or none, not '{}'", name));
 }
 
 // --cols N, --rows N: the screen's size in characters, from `smallest` to 10000.
@@ -150,6 +153,15 @@ void read_strategy(ArgumentReader& reader, Options& options) {
     throw UsageError(fmt::format("--strategy takes scan, table or grid, not '{}'", name));
 }
 
+// --pictures P: where pictures are taken.
+void read_pictures(ArgumentReader& reader, Options& options) {
+  const std::string name = reader.value();
+  options.pictures = picture_rule_named(name);
+  if (!options.pictures) {
+    throw UsageError(fmt::format("--pictures takes collisions or steps, not '{}'", name));
+  }
+}
+
 // Every option of the command line, and how it is read.
 struct KnownOption {
   std::string_view name;
@@ -167,6 +179,7 @@ constexpr KnownOption known_options[] = {
     // The screen's rows and two more: the status line, and the cursor below.
     {"--rows", read_screen_size<&Options::rows, smallest_rows + 2>},
     {"--strategy", read_strategy},
+    {"--pictures", read_pictures},
     {"--step", read_flag<&Options::step>},
     {"--trace", read_flag<&Options::trace>},
     {"--bell", read_flag<&Options::bell>},
@@ -207,25 +220,30 @@ Options parse_options(const std::vector<std::string>& arguments) {
   }
   if (options.frames && options.until)
     throw UsageError("--frames and --until exclude each other");
+  if (!options.drawn && !options.frames && !options.until)
+    throw UsageError("--mode none draws nothing: give it --until or --frames");
   return options;
 }
 
 std::string help_text() {
   return R"(gas - the billiard-ball gas of "Gas on the display" (Kvant 1989), in a terminal
 
-usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|stats]
-           [--events FILE] [--dump FILE] [--csv FILE] [--cols N] [--rows N]
-           [--step] [--trace] [--bell] [--strategy scan|table|grid] [--help]
+usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
+           [--mode balls|trails|stats|none] [--events FILE] [--dump FILE] [--csv FILE]
+           [--cols N] [--rows N] [--step] [--trace] [--bell]
+           [--strategy scan|table|grid] [--pictures collisions|steps] [--help]
 
   SCENE            a scene file (see data/README.md); none: the built-in default scene
   --frames N       take N display steps, then exit
   --until T        run until model time T, then exit (absolute: a --dump starts at its T)
   --keys KEYS      press one key per display step ('.' for none) instead of the keyboard
   --mode M         the screen: balls (moving balls), trails (trajectories),
-                   stats (figures only); default balls
+                   stats (figures only), or none (nothing drawn: a batch run
+                   for --events, --csv, --dump; needs --until or --frames);
+                   default balls
   --events FILE    write every collision to FILE as CSV: T,K,N1,N2
   --dump FILE      at exit, write the gas to FILE as a scene file
-  --csv FILE       write the statistics of every display step to FILE as CSV
+  --csv FILE       write the statistics of every picture to FILE as CSV
   --cols N         screen width in characters (default: the terminal's, else 80)
   --rows N         screen height in characters (default: the terminal's, else 24)
   --step           wait for Enter after every display step (a line may hold keys)
@@ -238,6 +256,13 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS] [--mode balls|trails|s
                    scan up to )" +
          std::to_string(most_balls_for_scan) + R"( balls, table up to )" +
          std::to_string(most_balls_for_table) + R"(, grid beyond
+  --pictures P     where pictures are taken: collisions (the article's: at
+                   every collision and at least every T0) or steps (only at
+                   T, T + T0, T + 2 T0, ...; the collisions between are not
+                   drawn); the same collisions either way. Default: collisions
+                   up to )" +
+         std::to_string(most_balls_for_every_collision) +
+         R"( balls, steps beyond
   --help           show this text
 
 keys (in a terminal, without Enter): S stop, R run, B reverse all velocities,

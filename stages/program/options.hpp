@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "beyond/display_steps.hpp"
 #include "beyond/strategy.hpp"
 #include "stage6_output.hpp"
 
@@ -29,6 +30,7 @@ struct Options {
   std::optional<double> until;             // --until T: stop at model time T
   std::optional<std::string> keys;         // --keys: one key per display step
   ScreenMode mode = ScreenMode::balls;     // --mode
+  bool drawn = true;                       // false for --mode none: nothing drawn
   std::optional<std::string> events_path;  // --events FILE
   std::optional<std::string> dump_path;    // --dump FILE
   std::optional<std::string> csv_path;     // --csv FILE
@@ -39,6 +41,7 @@ struct Options {
   bool bell = false;                       // --bell
   bool help = false;                       // --help
   std::optional<Strategy> strategy;        // --strategy; none: chosen by N
+  std::optional<PictureRule> pictures;     // --pictures; none: chosen by N
 };
 
 // Reads the arguments after the program's name. Throws UsageError.
