@@ -67,6 +67,7 @@ std::string gnuplot_script(const Picture& picture) {
         "set key {} box opaque noenhanced\n",
         quoted(panel.title), quoted(panel.x_label), quoted(panel.y_label), panel.key);
     script += axes(panel);
+    script += "set xrange [*:*]\nset yrange [*:*]\n" + panel.ranges + "\n";
     std::vector<std::string> plots;
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       const Series& series = panel.series[s];

@@ -26,6 +26,7 @@ struct Panel {
   bool log_x = false, log_y = false;
   std::vector<Series> series;
   std::string key = "bottom left";  // where the key goes (gnuplot's words)
+  std::string ranges;               // gnuplot's set xrange, set yrange; none: all data
 };
 
 struct Picture {

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <utility>
 
 #include "beyond/strategy.hpp"
@@ -27,6 +28,9 @@ Picture throughput_figure(const std::filesystem::path& out,
     panel.x_label = "N (balls)";
     panel.y_label = "collisions per second";
     panel.log_x = panel.log_y = true;
+    // Up to 10^10 a second: room for the key above the lines.
+    panel.ranges = "set yrange [1:1e10]";
+    panel.key = "top right";
     for (const Strategy s : {Strategy::scan, Strategy::table, Strategy::grid}) {
       Series series;
       series.title = fmt::format("engine: {}", strategy_name(s));
@@ -37,9 +41,8 @@ Picture throughput_figure(const std::filesystem::path& out,
     }
     if (first) {
       for (const auto& [label, title] :
-           {std::pair{'a', "gas --mode none"},
-            std::pair{'b', "gas --mode stats --csv, frames to a pipe"},
-            std::pair{'c', "the same, --pictures collisions"}}) {
+           {std::pair{'a', "gas --mode none"}, std::pair{'b', "gas --mode stats --csv"},
+            std::pair{'c', "gas --pictures collisions"}}) {
         Series series;
         series.title = title;
         series.joined = false;
@@ -74,6 +77,21 @@ Picture distance_figure(const std::filesystem::path& out,
           series.points.push_back({r.collisions_per_ball, r.error});
       panel.series.push_back(series);
     }
+    // The growth is all there is to see: up to twice the collisions per ball
+    // at which the last type is a radius off (the rest is the size of the table).
+    double last_off = 0;
+    bool all_off = true;
+    for (const Series& series : panel.series) {
+      const auto off = std::find_if(series.points.begin(), series.points.end(),
+                                    [](const auto& point) { return point.second >= 1; });
+      if (off == series.points.end()) {
+        all_off = false;
+      } else {
+        last_off = std::max(last_off, off->first);
+      }
+    }
+    if (all_off && last_off > 0)
+      panel.ranges = fmt::format("set xrange [0:{:g}]", 2 * last_off);
     picture.panels.push_back(panel);
   }
   return picture;
