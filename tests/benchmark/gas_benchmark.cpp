@@ -13,12 +13,20 @@
 //      return error against k, for each number type.
 //   4. What an event-driven program buys: a fixed-time-step program at
 //      several steps against the stages.
+//   5. The program as users run it: build/gas itself, timed as a process on
+//      large scenes, beside the engine on the same gas (program_runs.hpp).
+//
+// and two pictures beside it, drawn by gnuplot if it is installed
+// (plots.hpp): collisions per second against N, and the distance from the
+// 113-bit run against collisions per ball.
 //
 // Usage:  gas-benchmark [--smoke] [--out DIR]
 //   --smoke   tiny sizes, a few seconds (the test suite runs this)
 //   --out     where to write (default: data/reports of the source tree)
-// Progress goes to standard error. Single-threaded: one core.
+// Progress goes to standard error. Single-threaded: one core (and `gas`
+// runs alone while it is timed).
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -43,8 +51,12 @@
 #include "benchmark_build_info.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
+#include "engine.hpp"
 #include "program/console.hpp"
+#include "program_runs.hpp"
 #include "reference_gas.hpp"
+#include "report_pictures.hpp"
+#include "report_text.hpp"
 #include "stage2_input.hpp"
 #include "stage5_new_coordinates.hpp"
 #include "stage7_control.hpp"
@@ -58,6 +70,12 @@ using gas::Collision;
 using gas::CollisionKind;
 using gas::Gas;
 using gas::Strategy;
+using gas::benchmark::EventLoop;
+using gas::benchmark::measure_throughput;
+using gas::benchmark::ProgramFigures;
+using gas::benchmark::ProgramScene;
+using gas::benchmark::ProgramSettings;
+using gas::benchmark::Throughput;
 using gas::reference::ReferenceGas;
 
 double seconds_since(Clock::time_point start) {
@@ -72,12 +90,10 @@ double cpu_since(double start) {
   return cpu_seconds() - start;
 }
 
-template <class... Args>
-void progress(fmt::format_string<Args...> format, Args&&... args) {
-  fmt::print(stderr, "gas-benchmark: {}\n",
-             fmt::format(format, std::forward<Args>(args)...));
-  std::fflush(stderr);
-}
+using gas::benchmark::count_text;
+using gas::benchmark::DistanceRow;
+using gas::benchmark::progress;
+using gas::benchmark::yes_no;
 
 // ------------------------------------------------------------ settings
 
@@ -101,6 +117,8 @@ struct Sizes {
   std::size_t stepped_balls = 0;      // section 4
   double stepped_end = 0;             // section 4: model time of each run
   std::vector<double> stepped_dt;     // section 4: steps, in diameters per mean speed
+  int program_rounds = 0;             // section 5: timed runs of each command
+  double program_time_limit = 0;      // section 5: wall seconds before a run is stopped
 };
 
 Sizes sizes_for(bool smoke) {
@@ -117,7 +135,9 @@ Sizes sizes_for(bool smoke) {
             .reversal_k = {1, 2},
             .stepped_balls = 100,
             .stepped_end = 5,
-            .stepped_dt = {0.5, 0.1}};
+            .stepped_dt = {0.5, 0.1},
+            .program_rounds = 1,
+            .program_time_limit = 60};
   }
   return {.ball_counts = {2,    3,    4,    5,     7,     10,    12,    16,  24,
                           32,   48,   64,   96,    128,   192,   256,   384, 512,
@@ -133,7 +153,9 @@ Sizes sizes_for(bool smoke) {
           .reversal_k = {1, 2, 3, 5, 8, 12, 20, 30, 50},
           .stepped_balls = 2000,
           .stepped_end = 100,
-          .stepped_dt = {0.5, 0.25, 0.1, 0.05, 0.02, 0.01}};
+          .stepped_dt = {0.5, 0.25, 0.1, 0.05, 0.02, 0.01},
+          .program_rounds = 3,
+          .program_time_limit = 600};
 }
 
 // ------------------------------------------------------------ scenes
@@ -161,90 +183,7 @@ Gas crowd_gas() {
   return gas::read_scene_file(std::string(GAS_SOURCE_DIR) + "/data/crowd.scene");
 }
 
-// ------------------------------------------------------------ the event loop
-
-// The stages' loop with nothing drawn: stage 4 (one way or another), the clock
-// to TC, stage 5's apply_collision, and the finder told of it. What take_step
-// does when every step ends on a collision, without the picture.
-struct EventLoop {
-  Gas gas;
-  gas::CentreLimits limits;
-  std::unique_ptr<gas::FirstCollisionFinder> finder;
-
-  EventLoop(const Gas& start, Strategy strategy)
-      : gas(start),
-        limits(gas::centre_limits(start)),
-        finder(gas::make_finder(strategy)) {
-    finder->rebuild(gas, limits);
-  }
-  // The next collision, carried out; K = 0 if there is none.
-  Collision step() {
-    const Collision c = finder->first(gas);
-    if (c.kind == CollisionKind::none) return c;
-    gas.time = c.time;
-    gas::apply_collision(gas, limits, c);
-    finder->update(gas, c);
-    return c;
-  }
-  // Every collision up to model time `end`, and the clock to it.
-  void run_to(double end) {
-    for (Collision c = finder->first(gas); c.kind != CollisionKind::none && c.time <= end;
-         c = finder->first(gas)) {
-      gas.time = c.time;
-      gas::apply_collision(gas, limits, c);
-      finder->update(gas, c);
-    }
-    gas.time = end;
-  }
-};
-
 // ------------------------------------------------------------ 1. throughput
-
-struct Throughput {
-  Strategy strategy;
-  double fraction;  // area fraction of the gas
-  std::size_t balls;
-  double setup_seconds;  // predicting from scratch (rebuild)
-  long long collisions;
-  double seconds;
-  double per_second() const { return static_cast<double>(collisions) / seconds; }
-  double nanoseconds() const { return 1e9 * seconds / static_cast<double>(collisions); }
-};
-
-// Runs collisions in batches that double while they are quick, until the
-// budget is spent; returns how many ran and how long they took.
-std::pair<long long, double> run_for(EventLoop& loop, double budget, long long most) {
-  long long done = 0, batch = 1;
-  const double start = cpu_seconds();
-  double elapsed = 0;
-  while (elapsed < budget && done < most) {
-    const double batch_start = cpu_seconds();
-    for (long long i = 0; i < batch; ++i) loop.step();
-    done += batch;
-    elapsed = cpu_since(start);
-    if (batch < 4096 && cpu_since(batch_start) < 0.005) batch *= 2;
-  }
-  return {done, elapsed};
-}
-
-Throughput measure_throughput(const Gas& gas, Strategy strategy, double budget) {
-  const double start = cpu_seconds();
-  EventLoop loop(gas, strategy);
-  Throughput result{strategy, 0, gas.balls.size(), cpu_since(start), 0, 0};
-  // Warm up: a collision per ball (the grid's lists reach their working
-  // sizes), or a quarter of the budget.
-  run_for(loop, budget / 4, static_cast<long long>(gas.balls.size()));
-  // Three rounds, the best kept: the machine's noise (another program's use
-  // of the shared cache, say) only ever slows a round down.
-  for (int round = 0; round < 3; ++round) {
-    const auto [collisions, seconds] = run_for(loop, budget / 3, 1LL << 40);
-    if (result.collisions == 0 || collisions / seconds > result.per_second()) {
-      result.collisions = collisions;
-      result.seconds = seconds;
-    }
-  }
-  return result;
-}
 
 // Where `faster` starts to beat `slower`: the N, interpolated on log N,
 // at which their costs per collision cross; 0 if they do not cross; minus
@@ -418,11 +357,6 @@ double distance_of_stages(const Gas& stages, const ReferenceGas<__float128>& exa
   }
   return static_cast<double>(worst) / stages.radius;
 }
-
-struct DistanceRow {
-  std::string scene, type;
-  double collisions_per_ball, time, error;
-};
 
 // The distance of each type's run (and the stages') from the 113-bit run,
 // sampled at `samples` moments up to the time of `events` reference
@@ -671,14 +605,28 @@ class Csv {
   std::ofstream file_;
 };
 
-std::string count_text(double x) {
-  if (x >= 1e6) return fmt::format("{:.2f} M", x / 1e6);
-  if (x >= 1e3) return fmt::format("{:.1f} k", x / 1e3);
-  return fmt::format("{:.0f}", x);
-}
+// ------------------------------------------------------------ 5. the program
 
-std::string yes_no(bool met) {
-  return met ? "**met**" : "**not met**";
+// The scenes of section 5: the targets' data/large-10000.scene and the 10^5
+// one; for a smoke run, a tiny scene of its own in the scratch folder.
+ProgramSettings program_settings_for(const Settings& settings, const Sizes& sizes) {
+  ProgramSettings p;
+  p.program = GAS_PROGRAM;
+  p.rounds = sizes.program_rounds;
+  p.engine_budget = sizes.seconds_per_point;
+  p.time_limit = sizes.program_time_limit;
+  p.scratch = fs::temp_directory_path() / fmt::format("gas-benchmark-{}", getpid());
+  if (settings.smoke) {
+    fs::create_directories(p.scratch);
+    const fs::path tiny = p.scratch / "smoke-200.scene";
+    std::ofstream(tiny) << gas::benchmark::random_scene_text(200, 1989);
+    p.scenes.push_back({"smoke-200.scene", tiny, 20, 2});
+    return p;
+  }
+  const fs::path data = fs::path(GAS_SOURCE_DIR) / "data";
+  p.scenes.push_back({"data/large-10000.scene", data / "large-10000.scene", 1000, 2});
+  p.scenes.push_back({"data/large-100000.scene", data / "large-100000.scene", 100, 0.05});
+  return p;
 }
 
 int run(const Settings& settings) {
@@ -697,7 +645,7 @@ int run(const Settings& settings) {
   auto add = [&](const std::string& text) { report += text; };
 
   // ---- 1. throughput
-  progress("1/4 throughput: {} sizes of random gas at area fraction 0.3",
+  progress("1/5 throughput: {} sizes of random gas at area fraction 0.3",
            sizes.ball_counts.size());
   std::vector<Throughput> throughput;
   {
@@ -772,7 +720,7 @@ int run(const Settings& settings) {
   }
 
   // ---- 2. number types
-  progress("2/4 number types: float, double, long double against __float128");
+  progress("2/5 number types: float, double, long double against __float128");
   std::vector<TypeFigures> types;
   std::vector<DistanceRow> distance_rows;
   {
@@ -840,7 +788,7 @@ int run(const Settings& settings) {
   }
 
   // ---- 3. time reversal
-  progress("3/4 time reversal: forward k collisions per ball, B, back as long");
+  progress("3/5 time reversal: forward k collisions per ball, B, back as long");
   std::vector<ReversalRow> reversal;
   {
     Csv csv(settings.out / "time-reversal.csv",
@@ -862,7 +810,7 @@ int run(const Settings& settings) {
   }
 
   // ---- 4. time steps
-  progress("4/4 a fixed time step against the events: {} balls to T = {}",
+  progress("4/5 a fixed time step against the events: {} balls to T = {}",
            sizes.stepped_balls, sizes.stepped_end);
   const Gas stepped_gas = random_gas(sizes.stepped_balls, 0.2, 7);
   const EventDriven events = run_event_driven(stepped_gas, sizes.stepped_end);
@@ -888,6 +836,24 @@ int run(const Settings& settings) {
     for (const auto& [per, r] : stepped) row("time-stepped", per, r);
   }
 
+  // ---- 5. the program as users run it, beside the engine
+  const ProgramSettings program_settings = program_settings_for(settings, sizes);
+  const ProgramFigures program_runs = gas::benchmark::measure_program(program_settings);
+  gas::benchmark::write_program_csv(settings.out / "program.csv", program_runs);
+  fs::remove_all(program_settings.scratch);
+
+  // ---- the pictures
+  progress("pictures: gnuplot");
+  const std::string throughput_picture = gas::benchmark::picture_markdown(
+      gas::benchmark::throughput_figure(settings.out, throughput, {dense, sparse},
+                                        program_runs),
+      "Collisions per second against N, log-log: each way of stage 4 at area fraction "
+      "0.3 and 0.05, and the program");
+  const std::string distance_picture = gas::benchmark::picture_markdown(
+      gas::benchmark::distance_figure(settings.out, distance_rows),
+      "The distance from the 113-bit run against collisions per ball, "
+      "for each number type");
+
   // ---- the report
   progress("writing {}", (settings.out / "speed-against-error.md").string());
   const double grid_at_10k = cost(Strategy::grid, 10000, dense) > 0
@@ -906,8 +872,10 @@ int run(const Settings& settings) {
   add(fmt::format(
       "Written by `gas-benchmark`{} on {}. Regenerate it (from the top of the "
       "repository, minutes) with:\n\n"
-      "```sh\ncmake -S . -B build && cmake --build build -j2 --target gas-benchmark && "
-      "build/tests/benchmark/gas-benchmark\n```\n\n",
+      "```sh\napt-get update && apt-get install -y gnuplot-nox && cmake -S . -B build && "
+      "cmake --build build -j2 --target gas gas-benchmark && "
+      "build/tests/benchmark/gas-benchmark\n```\n\n"
+      "(gnuplot draws the two pictures; without it the report has none.)\n\n",
       settings.smoke ? " --smoke (tiny sizes: a test of the benchmark, not a measurement)"
                      : "",
       now_utc()));
@@ -945,8 +913,10 @@ int run(const Settings& settings) {
   add(fmt::format(
       "| the default scene runs no slower than with the article's scan | {:.3f} of "
       "the scan's display steps per second (the program keeps the scan for 7 balls) | "
-      "{} |\n\n",
+      "{} |\n",
       default_ratio, yes_no(default_ratio >= 0.97)));
+  add(gas::benchmark::program_targets(program_settings, program_runs));
+  add("\n");
   add("(\"No slower\" allows 3 %: two runs of the very same code differ by that much "
       "on a shared machine.)\n\n");
   if (grid_at_10k < 2e6 || grid_growth > 2) {
@@ -987,6 +957,9 @@ int run(const Settings& settings) {
     }
     add(line + "\n");
   }
+  add("\n" + throughput_picture +
+      "(The program's points: `build/gas` itself on the large scenes of section 5, "
+      "timed as a process.)\n");
   auto at = [](double n) {
     if (n < 0) return fmt::format("N = {:.0f} (the smallest measured)", -n);
     return n > 0 ? fmt::format("N ≈ {:.0f}", n) : std::string("nowhere measured");
@@ -1069,6 +1042,7 @@ int run(const Settings& settings) {
     }
     add("\n");
   }
+  add(distance_picture);
   add("The error grows geometrically, by a roughly constant factor per collision of "
       "two balls: each bit of mantissa buys a fixed number of collisions, so the "
       "trusted horizon grows in proportion to the bits, and no precision makes it "
@@ -1137,7 +1111,10 @@ int run(const Settings& settings) {
   add("\nBoth conserve energy to rounding: exchanging velocity components along the "
       "line of centres keeps it whatever the positions. What the time step gets wrong "
       "is *what happened*: collisions seen late (balls up to |v| dt inside each "
-      "other), counted at the wrong moments, or missed, and with them the pressure.\n");
+      "other), counted at the wrong moments, or missed, and with them the pressure.\n\n");
+
+  // 5.
+  add(gas::benchmark::program_section(program_settings, program_runs));
 
   {
     std::ofstream file(settings.out / "speed-against-error.md");
