@@ -164,7 +164,7 @@ void check_equation_of_state(double eta, double length, unsigned seed) {
   // The structure at contact: g(2a+) among the balls of the interior against
   // the reference's (Z - 1) / (2 eta) at eta_inside, within three errors
   // plus 0.5 % (the straight line through two shells 0.05 a wide reaches
-  // contact a little low where g(r) curves: 0.17 % at eta = 0.5, lesson 11).
+  // contact a little low where g(r) curves: 0.35 % at eta = 0.5, lesson 11).
   CAPTURE(m.pair_contact.value);
   CAPTURE(m.pair_contact.error);
   const double g_reference = gas::hard_disc_fluid_contact_value(eta_inside);

@@ -10,7 +10,7 @@
 // pressure: kT n(contact) = P. Each is read from two thin shells or strips
 // and extrapolated to contact along a straight line. One call walks the
 // balls once (with cells 2.5a wide for the pairs); the statistics take one
-// snapshot every N/2 collisions and average them (beyond/gas_statistics).
+// snapshot every N collisions and average them (beyond/gas_statistics).
 // Article: none; the article's screen shows no structure. Beyond it.
 // Lesson: lessons/11-kinetic-theory.md
 //
@@ -28,7 +28,7 @@ namespace gas {
 
 // The width of the shells and strips, in radii: thin enough that a straight
 // line through two of them reaches contact within about the noise (where
-// g(r) curves, at eta = 0.5, it ends some 0.2 % low: lesson 11), wide enough
+// g(r) curves, at eta = 0.5, it ends some 0.3 % low: lesson 11), wide enough
 // to hold balls at every snapshot.
 inline constexpr double contact_shell_radii = 0.05;
 

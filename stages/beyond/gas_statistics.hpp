@@ -7,7 +7,7 @@
 // walls, the collision virial of the whole box and of its interior, the time
 // the balls spend in the interior — and turns them into averages. A
 // collision costs a few operations whatever the number of balls; reading the
-// figures, and closing a sample for the error bars every N / 2 collisions,
+// figures, and closing a sample for the error bars every N collisions,
 // walks the balls once. Nothing depends on when pictures are taken.
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas, the mean speed for example"); all the rest is
