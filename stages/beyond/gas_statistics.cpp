@@ -221,6 +221,11 @@ void GasStatistics::restart(const Gas& gas) {
   start_averages(gas);
 }
 
+void GasStatistics::before_rows_rewritten(const Gas& gas) {
+  for (const Ball& ball : gas.balls)
+    sums_.interior_time += interior_time_of(ball, gas.time);
+}
+
 GasStatistics::Sums GasStatistics::sums_at(const Gas& gas, double now) const {
   Sums s = sums_;
   s.duration += now - last_time_;

@@ -87,6 +87,11 @@ class GasStatistics final : public CollisionObserver {
   // The averages start again now, with no warm-up (the key A).
   void restart(const Gas& gas);
 
+  // Every ball's row is about to be written at the gas's time T, not by a
+  // collision (the key B: stage 5's reverse_velocities): each flight so far
+  // ends now, and the time it spent in the interior is counted.
+  void before_rows_rewritten(const Gas& gas);
+
   // The figures at the gas's time T (walks the balls once).
   MeasuredFigures measured(const Gas& gas) const;
 
