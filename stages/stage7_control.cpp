@@ -150,6 +150,8 @@ KeyEffect press_key(Control& control, char key) {
       control.stopped = false;
       break;
     case 'B':  // reverse all velocities, change the tone, go on computing
+      if (control.observer != nullptr)
+        control.observer->before_rows_rewritten(control.gas);
       reverse_velocities(control.gas);
       control.tone = 1 - control.tone;
       control.must_find_collision = true;

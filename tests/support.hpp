@@ -35,6 +35,11 @@ std::string source_path(const std::string& relative);
 // The whole content of a file; fails the test if it cannot be read.
 std::string read_file(const std::string& path);
 
+// The lines of a text, without their ends; and the comma-separated fields of
+// one line (of a --csv or --events file).
+std::vector<std::string> lines_of(const std::string& text);
+std::vector<std::string> fields_of(const std::string& line);
+
 // The result of running the `gas` program.
 struct ProgramRun {
   int status = -1;  // exit status

@@ -21,20 +21,8 @@
 namespace {
 
 namespace fs = std::filesystem;
+using gas::testing::lines_of;
 using gas::testing::read_file;
-
-// The lines of a CSV file.
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    lines.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return lines;
-}
 
 }  // namespace
 

@@ -30,7 +30,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,16 +46,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using gas::testing::check_golden;
+using gas::testing::lines_of;
 using gas::testing::read_file;
 using gas::testing::run_program;
 using gas::testing::source_path;
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::stringstream stream(text);
-  for (std::string line; std::getline(stream, line);) lines.push_back(line);
-  return lines;
-}
 
 // The message parse_options gives for `arguments`, or "" if it accepts them.
 std::string usage_error(const std::vector<std::string>& arguments) {

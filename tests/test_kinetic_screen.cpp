@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -147,11 +146,8 @@ TEST_SUITE("kinetic-theory") {
     k.bulk_z_theory = 1.0 / 9;
     k.measured.h_now = 1.0 / 11;
     const std::string row = gas::csv_row(f, k);
-    std::vector<std::string> fields, names;
-    std::stringstream stream(row);
-    for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
-    std::stringstream header(gas::csv_header());
-    for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+    const std::vector<std::string> fields = gas::testing::fields_of(row);
+    const std::vector<std::string> names = gas::testing::fields_of(gas::csv_header());
     REQUIRE(fields.size() == 44);
     REQUIRE(names.size() == 44);
     auto same = [](const std::string& text, double value) {
@@ -189,13 +185,8 @@ TEST_SUITE("kinetic-theory") {
                                                 std::string(20, '.') + "A"});
     REQUIRE(run.status == 0);
     std::vector<std::vector<std::string>> rows;
-    std::stringstream lines(gas::testing::read_file(csv));
-    for (std::string line; std::getline(lines, line);) {
-      std::vector<std::string> fields;
-      std::stringstream stream(line);
-      for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
-      rows.push_back(fields);
-    }
+    for (const std::string& line : gas::testing::lines_of(gas::testing::read_file(csv)))
+      rows.push_back(gas::testing::fields_of(line));
     REQUIRE(rows.size() == 31);  // the header and T = 1 ... 30
     const std::size_t since = static_cast<std::size_t>(
         std::find(rows[0].begin(), rows[0].end(), "averages_since") - rows[0].begin());

@@ -16,25 +16,13 @@
 #include "support.hpp"
 
 using gas::PictureRule;
+using gas::testing::lines_of;
 using gas::testing::read_file;
 using gas::testing::run_program;
 using gas::testing::Scratch;
 using gas::testing::source_path;
 
 namespace {
-
-// The lines of a text, without their ends.
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    lines.push_back(text.substr(start, end - start));
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return lines;
-}
 
 // The first column (T) of each row of a --csv file, its header left out.
 std::vector<std::string> times_of(const std::string& csv_path) {

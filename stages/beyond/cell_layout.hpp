@@ -5,9 +5,11 @@
 // length across, and finds the cell that holds a point. With cells at least 2a
 // across, two centres in cells that are not neighbours are more than 2a apart,
 // so a ball needs to be compared only with the balls of the 3 x 3 cells around
-// its own. Two parts of the program rest on that: the cell grid of stage 4
-// (beyond/cell_grid.*), and the placement of the balls of a 'random' line
-// (beyond/random_placement.*). Both lay out their cells here.
+// its own. Three parts of the program rest on that: the cell grid of stage 4
+// (beyond/cell_grid.*), the placement of the balls of a 'random' line
+// (beyond/random_placement.*) and the pairs of the fluid's structure
+// (beyond/fluid_structure.*). All lay out their cells here; the last two
+// file the centres of one moment in CellLists.
 // Beyond the article: the article compares every ball with every other.
 // Lesson: lessons/10-scaling.md (the grid); lessons/2-input.md (the
 // 'random' line).
@@ -18,6 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 namespace gas {
 
@@ -61,5 +65,52 @@ inline CellLayout lay_out_cells(double width, double height, double smallest,
   return CellLayout{static_cast<int>(columns), static_cast<int>(rows), width / columns,
                     height / rows};
 }
+
+// Points filed by cell, for the two passes that look at a moment's centres
+// (the 'random' line's placement, and the structure of the fluid): each
+// cell keeps a chain of the numbers of the points in it, and a query visits
+// the points of the 3 x 3 cells around a place.
+class CellLists {
+ public:
+  // For up to `points` points, on cells `layout`.
+  CellLists(const CellLayout& layout, std::size_t points)
+      : layout_(layout),
+        head_(static_cast<std::size_t>(layout.columns) *
+                  static_cast<std::size_t>(layout.rows),
+              0),
+        next_(points, 0) {}
+
+  // Files point number `index` (0 ...), at (x, y).
+  void file(std::size_t index, double x, double y) {
+    const std::size_t cell = cell_index(layout_.column_of(x), layout_.row_of(y));
+    next_[index] = head_[cell];
+    head_[cell] = index + 1;
+  }
+
+  // Calls visit(index) for every point filed in the 3 x 3 cells around (x, y)
+  // until it returns false; false if it stopped.
+  template <typename Visit>
+  bool visit_near(double x, double y, Visit visit) const {
+    const int column = layout_.column_of(x), row = layout_.row_of(y);
+    for (int r = std::max(0, row - 1); r <= std::min(layout_.rows - 1, row + 1); ++r) {
+      for (int c = std::max(0, column - 1);
+           c <= std::min(layout_.columns - 1, column + 1); ++c) {
+        for (std::size_t k = head_[cell_index(c, r)]; k != 0; k = next_[k - 1])
+          if (!visit(k - 1)) return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  std::size_t cell_index(int column, int row) const {
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(layout_.columns) +
+           static_cast<std::size_t>(column);
+  }
+
+  CellLayout layout_;
+  std::vector<std::size_t> head_;  // by cell: a point's number + 1; 0: empty
+  std::vector<std::size_t> next_;  // by point: the next in its cell, + 1; 0 ends
+};
 
 }  // namespace gas

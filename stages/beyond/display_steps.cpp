@@ -22,7 +22,7 @@ Step take_display_step(Control& control, double time_limit, std::FILE* trace) {
   Step step;
   // The step's end: T + T0, or the time limit if that comes first.
   const double now = gas.time;
-  const double end = step_end(now, gas.display_step, never).time;
+  const double end = now + gas.display_step;
   const double target = end < time_limit ? end : time_limit;
 
   // Collision after collision up to the end, with no picture: the clock to

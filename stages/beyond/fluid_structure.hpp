@@ -20,8 +20,6 @@
 // corners.
 #pragma once
 
-#include <array>
-
 #include "stage1_data.hpp"
 
 namespace gas {
@@ -32,6 +30,17 @@ namespace gas {
 // to hold balls at every snapshot.
 inline constexpr double contact_shell_radii = 0.05;
 
+// A rectangle of centres, x_min <= x <= x_max, y_min <= y <= y_max: the
+// statistics' interior (empty on a table too small to have one).
+struct Region {
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+  bool contains(double x, double y) const {
+    return x >= x_min && x <= x_max && y >= y_min && y <= y_max;
+  }
+  bool empty() const { return !(x_max > x_min && y_max > y_min); }
+  double area() const { return empty() ? 0.0 : (x_max - x_min) * (y_max - y_min); }
+};
+
 // Contact values at one moment; NaN where there is nothing to measure (no
 // interior, no ball in it).
 struct ContactSnapshot {
@@ -40,9 +49,7 @@ struct ContactSnapshot {
       0;  // centres per area at the walls x = 0, A1, extrapolated
 };
 
-// The contact values of the gas at `time`, for the interior x_min ... x_max,
-// y_min ... y_max (of the centres).
-ContactSnapshot contact_snapshot(const Gas& gas, double time,
-                                 const std::array<double, 4>& interior);
+// The contact values of the gas at `time`, for the interior (of the centres).
+ContactSnapshot contact_snapshot(const Gas& gas, double time, const Region& interior);
 
 }  // namespace gas

@@ -48,19 +48,14 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up)
   kT_ = balls_ > 0 ? kinetic_energy(gas) / n : 0.0;
   // The interior: centres at least interior_margin_radii from every wall.
   const double margin = interior_margin_radii * gas.radius;
-  interior_[0] = margin;
-  interior_[1] = gas.width - margin;
-  interior_[2] = margin;
-  interior_[3] = gas.height - margin;
-  interior_area_ = std::max(0.0, interior_[1] - interior_[0]) *
-                   std::max(0.0, interior_[3] - interior_[2]);
+  interior_ = {margin, gas.width - margin, margin, gas.height - margin};
   const int count = std::max(bins, 1);
   bin_width_ = histogram_range * std::sqrt(2 * kT_) / count;
   // One entry per bin and one for the speeds beyond the last.
   bin_count_.assign(static_cast<std::size_t>(count) + 1, 0);
   bin_time_.assign(bin_count_.size(), 0.0);
   bin_since_.assign(bin_count_.size(), gas.time);
-  for (const Ball& ball : gas.balls) put_in(ball, gas.time);
+  for (const Ball& ball : gas.balls) count_speed(ball, gas.time, +1);
   // A sample for the error bars every N collisions: about two a ball.
   collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_));
   warm_up_until_ =
@@ -73,26 +68,14 @@ int GasStatistics::bin_of(double speed) const {
   return static_cast<int>(std::min(bin, static_cast<double>(bins())));
 }
 
-void GasStatistics::take_out(const Ball& ball, double time) {
+void GasStatistics::count_speed(const Ball& ball, double time, int change) {
   const double speed = speed_of(ball);
-  speed_sum_ -= speed;
+  speed_sum_ += change * speed;
+  // The bin's ball-time up to now, with the count it had; then the new count.
   const auto b = static_cast<std::size_t>(bin_of(speed));
   bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
   bin_since_[b] = time;
-  --bin_count_[b];
-}
-
-void GasStatistics::put_in(const Ball& ball, double time) {
-  const double speed = speed_of(ball);
-  speed_sum_ += speed;
-  const auto b = static_cast<std::size_t>(bin_of(speed));
-  bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
-  bin_since_[b] = time;
-  ++bin_count_[b];
-}
-
-bool GasStatistics::in_interior(double x, double y) const {
-  return x >= interior_[0] && x <= interior_[1] && y >= interior_[2] && y <= interior_[3];
+  bin_count_[b] += change;
 }
 
 // [anchor: interior-time]
@@ -104,26 +87,26 @@ double GasStatistics::interior_time_of(const Ball& ball, double until) const {
   const double from = std::max(ball.since, start_);
   if (!(until > from)) return 0;
   double first = 0, last = until - from;  // s, from `from`
-  const double position[2] = {ball.x + ball.vx * (from - ball.since),
-                              ball.y + ball.vy * (from - ball.since)};
+  const double x = ball.x + ball.vx * (from - ball.since);
+  const double y = ball.y + ball.vy * (from - ball.since);
   // Most flights start and end inside: all of the flight, no cutting. (The
   // interior is convex, so a straight flight with both ends in it stays in.)
-  if (in_interior(position[0], position[1]) &&
-      in_interior(position[0] + ball.vx * last, position[1] + ball.vy * last))
+  if (interior_.contains(x, y) &&
+      interior_.contains(x + ball.vx * last, y + ball.vy * last))
     return last;
-  const double velocity[2] = {ball.vx, ball.vy};
-  for (int axis = 0; axis < 2; ++axis) {
-    const double low = interior_[2 * axis], high = interior_[2 * axis + 1];
-    if (velocity[axis] == 0) {
-      if (position[axis] < low || position[axis] > high) return 0;
-      continue;
+  // Along one axis, the times between the two sides low ... high.
+  auto cut = [&](double position, double velocity, double low, double high) {
+    if (velocity == 0) {
+      if (position < low || position > high) last = -1;  // never inside
+      return;
     }
-    double enter = (low - position[axis]) / velocity[axis];
-    double leave = (high - position[axis]) / velocity[axis];
-    if (enter > leave) std::swap(enter, leave);
-    first = std::max(first, enter);
-    last = std::min(last, leave);
-  }
+    const double enter = (low - position) / velocity,
+                 leave = (high - position) / velocity;
+    first = std::max(first, std::min(enter, leave));
+    last = std::min(last, std::max(enter, leave));
+  };
+  cut(x, ball.vx, interior_.x_min, interior_.x_max);
+  cut(y, ball.vy, interior_.y_min, interior_.y_max);
   return std::max(0.0, last - first);
 }
 // [/anchor: interior-time]
@@ -142,8 +125,9 @@ void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::vertical_wall && height_ > 0) {
     sums_.push_x += 2 * std::abs(first.vx) / (2 * height_);
     // The middles of these walls, away from the corners (the contact theorem).
-    const double y = centre_at(first, t).y, middle = interior_[3] - interior_[2];
-    if (middle > 0 && y >= interior_[2] && y <= interior_[3])
+    const double y = centre_at(first, t).y;
+    const double middle = interior_.y_max - interior_.y_min;
+    if (middle > 0 && y >= interior_.y_min && y <= interior_.y_max)
       sums_.push_x_middle += 2 * std::abs(first.vx) / (2 * middle);
   }
   if (c.kind == CollisionKind::horizontal_wall && width_ > 0)
@@ -153,8 +137,8 @@ void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::balls) {
     const Ball& second = gas.balls[static_cast<std::size_t>(c.second - 1)];  // N2
     sums_.interior_time += interior_time_of(second, t);
-    take_out(first, t);
-    take_out(second, t);
+    count_speed(first, t, -1);  // the old speeds leave the sums
+    count_speed(second, t, -1);
     before_v_ = {first.vx, first.vy};
   }
 }
@@ -163,14 +147,15 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::balls) {
     const Ball& p = gas.balls[static_cast<std::size_t>(c.first - 1)];
     const Ball& q = gas.balls[static_cast<std::size_t>(c.second - 1)];
-    put_in(p, c.time);
-    put_in(q, c.time);
+    count_speed(p, c.time, +1);  // and the new ones come in
+    count_speed(q, c.time, +1);
     // The collision virial: the push one ball gave the other, dv of N1,
     // along d = r1 - r2 at contact: d . dv = 2a |dv| (positive).
     const double dx = p.x - q.x, dy = p.y - q.y;  // both written at TC
     const double virial = dx * (p.vx - before_v_[0]) + dy * (p.vy - before_v_[1]);
     sums_.virial += virial;
-    if (in_interior((p.x + q.x) / 2, (p.y + q.y) / 2)) sums_.interior_virial += virial;
+    if (interior_.contains((p.x + q.x) / 2, (p.y + q.y) / 2))
+      sums_.interior_virial += virial;
     ++sums_.ball_collisions;
   }
   // Every N collisions the sum of the speeds is added up afresh, so that the
@@ -254,7 +239,8 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
     case bulk_z_q:  // the same for the interior, N_int t = its ball-time
       return 1 + s.interior_virial / (2 * kT_ * s.interior_time);
     case interior_eta_q:  // n_int pi a^2
-      return s.interior_time / t / interior_area_ * std::numbers::pi * radius_ * radius_;
+      return s.interior_time / t / interior_.area() * std::numbers::pi * radius_ *
+             radius_;
     case collision_rate_q:
       return 2 * static_cast<double>(s.ball_collisions) / (n * t);
     case wall_middle_pressure_q:

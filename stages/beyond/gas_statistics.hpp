@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "beyond/blocking.hpp"
+#include "beyond/fluid_structure.hpp"
 #include "stage1_data.hpp"
 #include "stage4_first_collision.hpp"
 #include "stage7_control.hpp"
@@ -87,10 +88,10 @@ class GasStatistics final : public CollisionObserver {
   // The averages start again now, with no warm-up (the key A).
   void restart(const Gas& gas);
 
-  // Every ball's row is about to be written at the gas's time T, not by a
-  // collision (the key B: stage 5's reverse_velocities): each flight so far
-  // ends now, and the time it spent in the interior is counted.
-  void before_rows_rewritten(const Gas& gas);
+  // Stage 7's hook again: every ball's row is about to be written at the
+  // gas's time T, not by a collision (the key B): each flight so far ends
+  // now, and the time it spent in the interior is counted.
+  void before_rows_rewritten(const Gas& gas) override;
 
   // The figures at the gas's time T (walks the balls once).
   MeasuredFigures measured(const Gas& gas) const;
@@ -134,17 +135,15 @@ class GasStatistics final : public CollisionObserver {
   void start_averages(const Gas& gas);
   Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress
   int bin_of(double speed) const;                  // bins() for the faster ones
-  void take_out(const Ball& ball, double time);    // a ball's speed leaves the sums
-  void put_in(const Ball& ball, double time);      // and comes back, new
+  // A ball's speed leaves the sums (change -1) or comes in (+1) at `time`.
+  void count_speed(const Ball& ball, double time, int change);
   double interior_time_of(const Ball& ball, double until) const;  // of its flight
-  bool in_interior(double x, double y) const;
 
   std::size_t balls_ = 0;
   double kT_ = 0;
   double radius_ = 0;
-  double width_ = 0, height_ = 0;     // A1 - 2a, A2 - 2a: the box the centres move in
-  std::array<double, 4> interior_{};  // x_min, x_max, y_min, y_max of the interior
-  double interior_area_ = 0;          // of the interior, for its centres
+  double width_ = 0, height_ = 0;  // A1 - 2a, A2 - 2a: the box the centres move in
+  Region interior_;  // the centres at least interior_margin_radii from every wall
   double bin_width_ = 0;
   long long collisions_per_sample_ = 1;
 

@@ -38,11 +38,8 @@ class PlacedBalls {
       : gas_(gas),
         diameter_(2 * gas.radius),
         cells_(lay_out_cells(gas.width, gas.height, diameter_,
-                             2 * static_cast<double>(most_balls) + 16)),
-        head_(static_cast<std::size_t>(cells_.columns) *
-                  static_cast<std::size_t>(cells_.rows),
-              0),
-        next_(most_balls, 0) {
+                             2 * static_cast<double>(most_balls) + 16),
+               most_balls) {
     for (std::size_t i = 0; i < gas.balls.size(); ++i) file(i);
   }
 
@@ -50,39 +47,22 @@ class PlacedBalls {
   // scene's T: a 'ball' line may give its row at an earlier SINCE).
   void file(std::size_t index) {
     const Point centre = centre_at(gas_.balls[index], gas_.time);
-    const std::size_t cell =
-        cell_index(cells_.column_of(centre.x), cells_.row_of(centre.y));
-    next_[index] = head_[cell];
-    head_[cell] = index + 1;
+    cells_.file(index, centre.x, centre.y);
   }
 
   // Is (x, y) a free place: a centre there at least 2a from every ball?
   bool free(double x, double y) const {
-    const int column = cells_.column_of(x), row = cells_.row_of(y);
-    for (int r = std::max(0, row - 1); r <= std::min(cells_.rows - 1, row + 1); ++r) {
-      for (int c = std::max(0, column - 1); c <= std::min(cells_.columns - 1, column + 1);
-           ++c) {
-        for (std::size_t k = head_[cell_index(c, r)]; k != 0; k = next_[k - 1]) {
-          const Point centre = centre_at(gas_.balls[k - 1], gas_.time);
-          const double dx = centre.x - x, dy = centre.y - y;
-          if (dx * dx + dy * dy < diameter_ * diameter_) return false;
-        }
-      }
-    }
-    return true;
+    return cells_.visit_near(x, y, [&](std::size_t k) {
+      const Point centre = centre_at(gas_.balls[k], gas_.time);
+      const double dx = centre.x - x, dy = centre.y - y;
+      return dx * dx + dy * dy >= diameter_ * diameter_;
+    });
   }
 
  private:
-  std::size_t cell_index(int column, int row) const {
-    return static_cast<std::size_t>(row) * static_cast<std::size_t>(cells_.columns) +
-           static_cast<std::size_t>(column);
-  }
-
   const Gas& gas_;
   double diameter_;
-  CellLayout cells_;
-  std::vector<std::size_t> head_;  // by cell: a ball's number + 1, 0: empty
-  std::vector<std::size_t> next_;  // by ball: the next in its cell, + 1; 0 ends
+  CellLists cells_;
 };
 
 // The centres: each ball in turn at a random point of the table (a <= x <=

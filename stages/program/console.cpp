@@ -212,13 +212,10 @@ class ConsoleRun {
   }
 
   // Carries out the keys in `keys`; false once E is pressed. Beyond the
-  // article's keys, A restarts the statistics' averages (lesson 11); and B,
-  // which rewrites every ball's row at T, first ends the statistics' flights.
+  // article's keys, A restarts the statistics' averages (lesson 11).
   bool press_all(const std::string& keys) {
     for (const char key : keys) {
       if ((key == 'A' || key == 'a') && statistics_) statistics_->restart(control_.gas);
-      if ((key == 'B' || key == 'b') && statistics_)
-        statistics_->before_rows_rewritten(control_.gas);
       const KeyEffect effect = press_key(control_, key);
       if (effect == KeyEffect::end) return false;
       if (effect == KeyEffect::redraw) prepare_again();

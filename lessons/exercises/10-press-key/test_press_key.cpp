@@ -90,6 +90,37 @@ TEST_SUITE("exercise-10") {
     CHECK(control.gas.balls[0].vx == before[0].vx);
   }
 
+  TEST_CASE("exercise-10 B tells the observer before it rewrites the rows") {
+    // An observer that notes what the rows were when it was told.
+    struct Listener final : gas::CollisionObserver {
+      int told = 0;
+      std::vector<gas::Ball> rows;  // as they were when told
+      void before_rows_rewritten(const gas::Gas& gas) override {
+        ++told;
+        rows = gas.balls;
+      }
+    } listener;
+    Control control = three_balls();
+    const std::vector<gas::Ball> before = control.gas.balls;
+    control.observer = &listener;
+    gas::press_key(control, 'B');
+    INFO("B must call control.observer->before_rows_rewritten(control.gas) once");
+    CHECK(listener.told == 1);
+    INFO("... and before reverse_velocities: the observer must see the old rows");
+    REQUIRE(listener.rows.size() == before.size());
+    for (std::size_t i = 0; i < before.size(); ++i) {
+      CAPTURE(i + 1);
+      CHECK(listener.rows[i].vx == before[i].vx);
+      CHECK(listener.rows[i].since == before[i].since);
+    }
+    // No other key tells it anything; and with no observer B still works.
+    for (const char key : std::string("SR><0.x")) gas::press_key(control, key);
+    CHECK(listener.told == 1);
+    control.observer = nullptr;
+    gas::press_key(control, 'B');
+    CHECK(control.tone == 0);
+  }
+
   TEST_CASE("exercise-10 0 asks for a redraw and E ends") {
     Control control = three_balls();
     CHECK(effect(control, '0') == redraw);
