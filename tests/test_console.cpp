@@ -292,6 +292,43 @@ TEST_SUITE("console") {
     CHECK(frames_of(stuck.out).size() == 1);
   }
 
+  TEST_CASE(
+      "the program: a piped run takes 100 frames, or as many as its keys, --frames or "
+      "--until ask") {
+    // Its output a pipe and nothing said of its length: 100 frames, then the
+    // run ends by itself (and does not fill a disk).
+    const std::vector<std::string> small{"--cols", "20", "--rows", "9"};
+    auto run = [&](std::vector<std::string> arguments) {
+      arguments.insert(arguments.begin(), "data/default.scene");
+      arguments.insert(arguments.end(), small.begin(), small.end());
+      const auto result = run_program(arguments);
+      CHECK(result.status == 0);
+      return frames_of(result.out);
+    };
+    CHECK(run({}).size() == 100);
+    // More than 100 keys: every one is pressed, one a frame; B is the 101st,
+    // and from frame 101 the balls are drawn in the other tone ('@').
+    const std::vector<Frame> keyed =
+        run({"--keys", std::string(100, '.') + "B........."});
+    REQUIRE(keyed.size() == 110);
+    auto drawn_with = [](const Frame& frame, char glyph) {
+      for (const std::string& line : frame.screen)
+        if (line.find(glyph) != std::string::npos) return true;
+      return false;
+    };
+    CHECK(drawn_with(keyed[99], 'O'));
+    CHECK_FALSE(drawn_with(keyed[99], '@'));
+    CHECK(drawn_with(keyed[100], '@'));
+    CHECK_FALSE(drawn_with(keyed[100], 'O'));
+    // --frames, above 100 or below the keys: that many.
+    CHECK(run({"--frames", "130"}).size() == 130);
+    CHECK(run({"--frames", "3", "--keys", std::string(110, '.')}).size() == 3);
+    // --until past T = 100 (T0 = 1): frames up to T = 150, however many.
+    const std::vector<Frame> until = run({"--until", "150"});
+    CHECK(until.size() > 150);  // a frame at every T + T0, and at collisions
+    CHECK(until.back().status.rfind("T=150.000000 ", 0) == 0);
+  }
+
   TEST_CASE("scripted runs of every scene against golden outputs") {
     // name: the scene and the options, so that the file says how to remake it.
     struct Script {

@@ -21,6 +21,7 @@
 
 #include "beyond/random_placement.hpp"
 #include "program/run_outputs.hpp"
+#include "program/terminal.hpp"
 #include "support.hpp"
 
 namespace {
@@ -147,6 +148,58 @@ TEST_SUITE("console") {
       CHECK(std::distance(fs::directory_iterator(scratch.path),
                           fs::directory_iterator()) == 4);
     }
+  }
+
+  TEST_CASE("of two signals in a row the first decides, whichever two they are") {
+    // Ctrl-C, then SIGTERM from a scheduler (or the terminal closing: SIGHUP)
+    // before the loop has looked: the run ends for the first, and says so.
+    // Each pair in a child process of its own, as the program would get
+    // them: the flag installed, the two signals raised one after the other
+    // (raise returns after the handler has run), the signal read back as the
+    // exit status.
+    const int signals[] = {SIGINT, SIGTERM, SIGHUP};
+    for (const int first : signals) {
+      for (const int second : signals) {
+        const std::string names =
+            std::string(gas::signal_name(first)) + ", then " + gas::signal_name(second);
+        INFO(names);
+        const pid_t child = fork();
+        REQUIRE(child >= 0);
+        if (child == 0) {
+          gas::install_interrupt_flag();
+          if (gas::interrupted()) std::_Exit(100);  // a flag raised by nothing
+          raise(first);
+          raise(second);
+          std::_Exit(gas::interrupted() ? gas::interrupting_signal() : 101);
+        }
+        int status = 0;
+        REQUIRE(waitpid(child, &status, 0) == child);
+        REQUIRE(WIFEXITED(status));  // not killed: both signals only raised the flag
+        CHECK(WEXITSTATUS(status) == first);
+      }
+    }
+  }
+
+  TEST_CASE("the program: SIGINT then SIGTERM at once, the run ends for SIGINT") {
+    // The two signals sent back to back to a run under way: the exit status
+    // and the message are the first one's (130, "SIGINT"), not the last's.
+    // Often both are still pending when the program next runs; the kernel
+    // then hands over SIGINT first (the lower number) and, with the other
+    // two signals blocked while its handler runs, SIGINT's handler sets the
+    // flag first. So the outcome does not depend on timing. (Without that
+    // blocking SIGTERM's handler would run on top of SIGINT's before it,
+    // and the run would end for SIGTERM.)
+    const Scratch scratch;
+    const std::string events = scratch.file("events.csv"), err = scratch.file("err");
+    const pid_t child = start_gas(
+        {source_path("data/crowd.scene"), "--until", "1e9", "--events", events}, err);
+    wait_for_lines(events, 200);
+    kill(child, SIGINT);
+    kill(child, SIGTERM);
+    const int status = wait_for(child, 20);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 128 + SIGINT);
+    CHECK(read_file(err).rfind("gas: interrupted by SIGINT at T = ", 0) == 0);
   }
 
   TEST_CASE("an output that cannot be written ends the run with exit 1 naming the file") {

@@ -436,3 +436,94 @@ TEST_SUITE("kinetic-theory") {
     CHECK(after == doctest::Approx(before).epsilon(1e-12));
   }
 }
+
+namespace {
+
+// The bin of the statistics screen's histogram a speed belongs in, worked
+// out here from its definition (lesson 11): `bins` equal bins from 0 to
+// 2.5 v_rms, v_rms = sqrt(2 kT) of the gas at the start (its energy does not
+// change); `bins` itself for a speed beyond the last bin.
+std::size_t histogram_bin(double speed, double kT, int bins) {
+  const double width = 2.5 * std::sqrt(2 * kT) / bins;
+  return static_cast<std::size_t>(std::min(std::floor(speed / width), double(bins)));
+}
+
+}  // namespace
+
+TEST_SUITE("kinetic-theory") {
+  TEST_CASE(
+      "the speed histogram: a ball faster than 2.5 v_rms is counted beyond the last "
+      "bin") {
+    // Ten balls far apart on a large table (no collision before T = 2): one
+    // at speed 3, which is beyond 2.5 v_rms (v_rms^2 = (9 + 9 x 0.25) / 10,
+    // 2.5 v_rms = 2.65), and nine at 0.5 in various directions. Over [0, 2]
+    // the histogram's fractions of ball-time are those of the balls: 9/10 in
+    // the bin of speed 0.5 (the second of ten bins 0.265 wide), 1/10 beyond,
+    // none in the last bin.
+    Gas g;
+    g.radius = 1;
+    g.width = g.height = 400;
+    g.display_step = 1e9;
+    g.balls.push_back({200, 200, 3, 0, 0});
+    for (int i = 0; i < 9; ++i) {
+      const double angle = 0.7 * i;
+      g.balls.push_back(
+          {40.0 + 40 * i, 100, 0.5 * std::cos(angle), 0.5 * std::sin(angle), 0});
+    }
+    const double kT = gas::kinetic_energy(g) / 10;
+    constexpr int bins = 10;
+    ObservedRun run(g);
+    const GasStatistics& statistics = run.start_statistics(bins, false);
+    run_until(run.control, 2);
+    REQUIRE(run.control.wall_collisions + run.control.ball_collisions == 0);
+    const gas::MeasuredFigures m = statistics.measured(run.control.gas);
+    REQUIRE(m.speed_fractions.size() == bins);
+    CHECK(m.bin_width == doctest::Approx(2.5 * std::sqrt(2 * kT) / bins));
+    const std::size_t slow = histogram_bin(0.5, kT, bins);
+    REQUIRE(slow == 1);
+    REQUIRE(histogram_bin(3, kT, bins) == bins);
+    // Why 1e-12: each fraction is a ball-time (a count times 2) over 20.
+    CHECK(m.fraction_beyond == doctest::Approx(0.1).epsilon(1e-12));
+    for (std::size_t b = 0; b < bins; ++b) {
+      CAPTURE(b);
+      CHECK(m.speed_fractions[b] ==
+            doctest::Approx(b == slow ? 0.9 : 0.0).epsilon(1e-12));
+    }
+  }
+
+  TEST_CASE(
+      "the speed histogram: each bin holds the ball-time its speeds spent there, to "
+      "round-off") {
+    // 36 balls, started at speed 1 and colliding (area fraction 0.3), from
+    // T = 0 to 40 (about 35 collisions a ball): the speeds spread out and
+    // some pass 2.5 v_rms. The reference: step by step (take_step stops at
+    // every collision, and speeds change only there), each ball's step
+    // length added to the bin of its speed in this test's own reckoning.
+    constexpr int bins = 12;
+    ObservedRun run(lattice_gas(6, 0.3, 21));
+    Control& control = run.control;
+    const double kT = gas::kinetic_energy(control.gas) / 36;
+    const GasStatistics& statistics = run.start_statistics(bins, false);
+    std::vector<double> ball_time(bins + 1, 0.0);
+    while (control.gas.time < 40) {
+      std::vector<std::size_t> bin_of_ball;
+      for (const gas::Ball& b : control.gas.balls)
+        bin_of_ball.push_back(
+            histogram_bin(std::sqrt(b.vx * b.vx + b.vy * b.vy), kT, bins));
+      const gas::Step step = gas::take_step(control, 40, nullptr);
+      for (const std::size_t bin : bin_of_ball) ball_time[bin] += step.length;
+    }
+    const gas::MeasuredFigures m = statistics.measured(control.gas);
+    REQUIRE(m.speed_fractions.size() == bins);
+    const double total = 36 * 40.0;
+    // Why 1e-12: both sides add the same step lengths (some 2500 of them,
+    // each exact to an ulp of T = 40) in a different order.
+    for (std::size_t b = 0; b < bins; ++b) {
+      CAPTURE(b);
+      CHECK(m.speed_fractions[b] == doctest::Approx(ball_time[b] / total).epsilon(1e-12));
+    }
+    CAPTURE(ball_time[bins] / total);
+    CHECK(ball_time[bins] > 0);  // the case this test is for: balls beyond the last bin
+    CHECK(m.fraction_beyond == doctest::Approx(ball_time[bins] / total).epsilon(1e-12));
+  }
+}

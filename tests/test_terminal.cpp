@@ -321,6 +321,29 @@ TEST_SUITE("console") {
     }
   }
 
+  TEST_CASE("on a terminal a run has no frame limit: it goes past frame 100 by itself") {
+    // A piped run stops after 100 frames (suite console, "a piped run takes
+    // 100 frames ..."); one drawn on a terminal runs until E or a signal,
+    // even with a script of one key (--keys: no pacing, no keyboard). Each
+    // frame moves T by at most T0 = 1, so T = 150 is past frame 150. The
+    // status line is redrawn in place, only the characters that changed, so
+    // it is read off a terminal that plays what the program wrote.
+    PtyRun run(80, 24, {"--keys", "."});
+    Terminal terminal(80, 24);
+    std::size_t played = 0;
+    const auto past = [&] {
+      // Up to the last escape, which may not have arrived whole.
+      const std::size_t last = run.output().rfind('\x1b');
+      if (last == std::string::npos || last <= played) return false;
+      terminal.play(run.output().substr(played, last - played));
+      played = last;
+      const std::string status = terminal.line(1);
+      return status.rfind("T=", 0) == 0 && std::stod(status.substr(2)) >= 150;
+    };
+    CHECK_MESSAGE(run.read_until(past, 10000),
+                  "the run ended or stalled before T = 150: " << terminal.line(1));
+  }
+
   TEST_CASE("--cols and --rows keep their size in a smaller window, cut at its edges") {
     PtyRun run(80, 24, {"--cols", "100", "--rows", "30"});
     run.read_for(400);

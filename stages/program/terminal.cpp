@@ -49,7 +49,12 @@ std::optional<TerminalSize> terminal_size() {
 void install_interrupt_flag() {
   struct sigaction action {};
   action.sa_handler = on_interrupt;
+  // While the handler runs, the other two wait. Else of two signals that
+  // arrive together (Ctrl-C, then SIGTERM) the kernel would start the first
+  // one's handler and then the second's on top of it, which would set the
+  // flag first, and the second signal would decide.
   sigemptyset(&action.sa_mask);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&action.sa_mask, signal);
   action.sa_flags = 0;  // no SA_RESTART: a waiting poll() returns at once
   for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal, &action, nullptr);
 }
