@@ -22,9 +22,11 @@ namespace gas {
 // The box a ball's centre must stay in (the article's G1, G2, on a table whose
 // walls are the lines x = 0, x = A1, y = 0, y = A2).
 //
-// The article's pixel screen also spends a pixel on the border line and draws
-// a ball from its corner, hence its "A1 - 2a - 1"; on our table the centre of
-// a ball of radius a touches a wall when it is a away from it.
+// The article calls its G1 = A1 - 2a - 1 ("of the type") a limit of the
+// centres; our reading of it (lesson 8's, not the article's words): a pixel
+// screen that spends a pixel on the border line and draws a ball from its
+// corner. On our table the centre of a ball of radius a touches a wall when
+// it is a away from it.
 // [anchor: centre-limits]
 struct CentreLimits {
   double x_min = 0;  // a

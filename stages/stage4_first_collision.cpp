@@ -8,7 +8,7 @@
 namespace gas {
 
 // The article avoids dividing by zero by first asking whether the ball gets
-// past the limit before TC at all ("x + vx (TC - T) < G1"). A ball at rest
+// past the limit by TC at all ("x + vx (TC - T) < G1"). A ball at rest
 // along x never does, so the division is never reached. Here the same
 // question is asked of the sign of the velocity: only a centre moving towards
 // a wall has a time to it.

@@ -85,12 +85,14 @@ inline Collision due_from(Collision first, double now) {
   return first;
 }
 
-// The earliest collision of the gas, scanning in the article's order: for
-// each ball the walls (K = 1, then K = 2), then every pair N3 < N4 (K = 3). A
-// collision wins only if it is strictly earlier than the best so far, so of
-// simultaneous collisions the first one scanned is taken. (The article's
-// wall test lets the last one scanned win a tie; lesson 4 says why we keep
-// the first.) TC is never earlier than gas.time.
+// The earliest collision of the gas: the balls in the article's order, by
+// number, each against its walls (K = 1, then K = 2: this order within a
+// ball is ours, the article gives none), then every pair N3 < N4 (K = 3), the
+// article's double loop. A collision wins only if it is strictly earlier
+// than the best so far, so of simultaneous collisions the first one scanned
+// is taken. (The article's wall test lets the last one scanned win a tie:
+// of two balls reaching a wall at one TC it keeps the later-numbered; lesson
+// 4 says why we keep the first.) TC is never earlier than gas.time.
 // [anchor: find-first-collision-declaration]
 Collision find_first_collision(const Gas& gas, const CentreLimits& limits);
 // [/anchor: find-first-collision-declaration]

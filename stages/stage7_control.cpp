@@ -155,6 +155,7 @@ KeyEffect press_key(Control& control, char key) {
       reverse_velocities(control.gas);
       control.tone = 1 - control.tone;
       control.must_find_collision = true;
+      control.stopped = false;  // "go on computing": a stopped model runs again
       break;
     // T0 only decides where pictures are taken; TC does not depend on it, so
     // unlike the article's program we need not go back to stage 4.

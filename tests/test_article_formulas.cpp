@@ -334,12 +334,20 @@ struct ArticleCollision {
 // wall reached exactly at TC fails the test and replaces it).
 enum class PairTies { kept, replaced };
 
+// Which of one ball's walls the literal scan tests first. The article says
+// the balls go in turn by number, and gives the x-test against G1 as its one
+// example; it does not say whether a ball's horizontal walls come before its
+// vertical ones. The stages test the horizontal ones first.
+enum class WallOrder { horizontal_first, vertical_first };
+
 // The article's stage 4 for balls all written at the gas's time T: start
-// with a large TC and K = N1 = N2 = 0, scan every ball against the walls by
-// the condition above, then every pair N3 < N4 by the quadratic (D > 0, the
-// smaller root, not in the past). The limits are our contract's, a and A - a.
-ArticleCollision article_first_collision(const gas::Gas& gas, Real large,
-                                         PairTies pair_ties = PairTies::kept) {
+// with a large TC and K = N1 = N2 = 0, scan every ball, by number, against
+// the walls by the condition above, then every pair N3 < N4 by the quadratic
+// (D > 0, the smaller root, not in the past). The limits are our contract's,
+// a and A - a.
+ArticleCollision article_first_collision(
+    const gas::Gas& gas, Real large, PairTies pair_ties = PairTies::kept,
+    WallOrder wall_order = WallOrder::horizontal_first) {
   ArticleCollision c;
   c.time = large;
   const Real now = gas.time, a = gas.radius;
@@ -347,15 +355,26 @@ ArticleCollision article_first_collision(const gas::Gas& gas, Real large,
   const int n = static_cast<int>(gas.balls.size());
   for (int i = 1; i <= n; ++i) {
     const gas::Ball& b = gas.balls[static_cast<std::size_t>(i - 1)];
-    if (article_wall(b.y, b.vy, low, top, now, c.time, c.zero_divisions)) {
-      c.kind = 1;  // a horizontal wall
-      c.first = i;
-      c.second = 0;
-    }
-    if (article_wall(b.x, b.vx, low, right, now, c.time, c.zero_divisions)) {
-      c.kind = 2;  // a vertical wall
-      c.first = i;
-      c.second = 0;
+    auto horizontal = [&] {
+      if (article_wall(b.y, b.vy, low, top, now, c.time, c.zero_divisions)) {
+        c.kind = 1;  // a horizontal wall
+        c.first = i;
+        c.second = 0;
+      }
+    };
+    auto vertical = [&] {
+      if (article_wall(b.x, b.vx, low, right, now, c.time, c.zero_divisions)) {
+        c.kind = 2;  // a vertical wall
+        c.first = i;
+        c.second = 0;
+      }
+    };
+    if (wall_order == WallOrder::horizontal_first) {
+      horizontal();
+      vertical();
+    } else {
+      vertical();
+      horizontal();
     }
   }
   for (int n3 = 1; n3 < n; ++n3) {
@@ -811,23 +830,67 @@ TEST_SUITE("article") {
   }
 
   TEST_CASE(
-      "article ties: a wall reached exactly at TC replaces it; the stages keep the first "
-      "scanned") {
-    // The article's wall test "x + vx (TC - T) < G1" fails when the ball
-    // reaches the limit exactly at the TC found so far, so that wall replaces
-    // TC: of simultaneous walls the one scanned *last* wins. The stages keep
-    // the one scanned *first* (a later event must be strictly earlier). The
-    // corner: a = 1 on a 10 x 10 table, a ball at (5, 5) moving (1, 1) meets
-    // y = 9 (K = 1) and x = 9 (K = 2) both at T = 4.
+      "article ties: two balls at one wall at one TC, the article's scan keeps the later "
+      "ball, the stages the earlier") {
+    // The order the article does give: the balls in turn by number. Its
+    // wall test "x + vx (TC - T) < G1" fails when a ball reaches the limit
+    // exactly at the TC found so far ("up to TC" includes TC), so that
+    // ball's wall replaces TC: of simultaneous walls the later-numbered ball
+    // wins. The stages keep the earlier (a later event must be strictly
+    // earlier). a = 1 on a 10 x 10 table: balls 1 at (5, 3) and 2 at (5, 7),
+    // both moving (1, 0), reach x = G1 = 9 together at T = 4, every number
+    // exact in floating point.
+    const gas::Gas two = table(10, 10, 1, {ball(5, 3, 1, 0), ball(5, 7, 1, 0)}, 8);
+    for (const WallOrder order :
+         {WallOrder::horizontal_first, WallOrder::vertical_first}) {
+      const ArticleCollision article =
+          article_first_collision(two, 1e30L, PairTies::kept, order);
+      CHECK(article.time == 4);
+      CHECK(article.kind == 2);
+      CHECK(article.first == 2);  // the article: the later-numbered ball
+    }
+    const gas::Collision stage = gas::find_first_collision(two, gas::centre_limits(two));
+    CHECK(stage.time == 4);
+    CHECK(stage.kind == gas::CollisionKind::vertical_wall);
+    CHECK(stage.first == 1);  // the stages: the earlier-numbered ball
+    CHECK(stage.second == 0);
+    // Stage 7 carries out both at the instant, ball 1 first, and the
+    // instant ends as in the article's order: events of different balls
+    // commute.
+    gas::Control control = gas::start_control(two);
+    const gas::Step step = gas::take_step(control, gas::never, nullptr);
+    REQUIRE(step.collisions.size() == 2);
+    CHECK(step.collisions[0].first == 1);
+    CHECK(step.collisions[1].first == 2);
+    CHECK(control.gas.time == 4);
+    for (const gas::Ball& b : control.gas.balls) {
+      CHECK(b.vx == -1);
+      CHECK(b.vy == 0);
+    }
+  }
+
+  TEST_CASE(
+      "article ties: the corner's K depends on which wall of a ball is tested first, "
+      "which the article leaves open") {
+    // A ball aimed into a corner: a = 1 on a 10 x 10 table, a ball at (5, 5)
+    // moving (1, 1) meets y = 9 (K = 1) and x = 9 (K = 2) both at T = 4. The
+    // literal rule lets the wall tested last win, so its K is whichever wall
+    // of the ball comes second: K = 2 in the stages' order (horizontal
+    // first), K = 1 had the x-test (the article's one example) come first.
+    // The stages keep the one tested first, K = 1.
     const gas::Gas corner = table(10, 10, 1, {ball(5, 5, 1, 1)});
-    const ArticleCollision article = article_first_collision(corner, 1e30L);
+    const ArticleCollision horizontal_first = article_first_collision(
+        corner, 1e30L, PairTies::kept, WallOrder::horizontal_first);
+    const ArticleCollision vertical_first =
+        article_first_collision(corner, 1e30L, PairTies::kept, WallOrder::vertical_first);
     const gas::Collision stage =
         gas::find_first_collision(corner, gas::centre_limits(corner));
-    CHECK(article.time == 4);
-    CHECK(article.kind == 2);  // the article: the vertical wall, scanned last
+    CHECK(horizontal_first.time == 4);
+    CHECK(horizontal_first.kind == 2);
+    CHECK(vertical_first.time == 4);
+    CHECK(vertical_first.kind == 1);
     CHECK(stage.time == 4);
-    CHECK(stage.kind ==
-          gas::CollisionKind::horizontal_wall);  // the stages: scanned first
+    CHECK(stage.kind == gas::CollisionKind::horizontal_wall);  // the stages: tested first
     // Either order, the instant ends the same: each wall flips its own
     // component of the one ball's velocity, and flips commute.
     const gas::CentreLimits limits = gas::centre_limits(corner);
@@ -840,12 +903,12 @@ TEST_SUITE("article") {
     };
     const gas::Ball ours = both_walls(gas::CollisionKind::horizontal_wall,
                                       gas::CollisionKind::vertical_wall);
-    const gas::Ball articles = both_walls(gas::CollisionKind::vertical_wall,
-                                          gas::CollisionKind::horizontal_wall);
-    CHECK(ours.x == articles.x);
-    CHECK(ours.y == articles.y);
-    CHECK(ours.vx == articles.vx);
-    CHECK(ours.vy == articles.vy);
+    const gas::Ball other = both_walls(gas::CollisionKind::vertical_wall,
+                                       gas::CollisionKind::horizontal_wall);
+    CHECK(ours.x == other.x);
+    CHECK(ours.y == other.y);
+    CHECK(ours.vx == other.vx);
+    CHECK(ours.vy == other.vy);
     CHECK(ours.vx == -1);
     CHECK(ours.vy == -1);
     // And stage 7 carries out both at the instant, in the stages' order.

@@ -290,6 +290,21 @@ TEST_SUITE("console") {
         run_program({"data/default.scene", "--keys", ".S", "--frames", "10"});
     CHECK(stuck.status == 0);
     CHECK(frames_of(stuck.out).size() == 1);
+
+    // B on a stopped model: reverse, change the tone, and go on computing
+    // (the article's words): the run goes on, drawn in the other tone.
+    const auto reversed =
+        run_program({"data/default.scene", "--keys", ".SB", "--frames", "3"});
+    CHECK(reversed.status == 0);
+    const std::vector<Frame> after_b = frames_of(reversed.out);
+    REQUIRE(after_b.size() == 3);
+    auto other_tone = [](const Frame& frame) {
+      for (const std::string& line : frame.screen)
+        if (line.find('@') != std::string::npos) return true;
+      return false;
+    };
+    CHECK_FALSE(other_tone(after_b[0]));
+    CHECK(other_tone(after_b[1]));
   }
 
   TEST_CASE(

@@ -294,6 +294,25 @@ TEST_SUITE("stage7") {
     CHECK(c.gas.balls[0].vx == 1);
   }
 
+  TEST_CASE("key B on a stopped model: reverse, change the tone, and go on computing") {
+    // The article's B: 「すべての速度を逆にし, 基本色の色調を変えて計算過程を実行
+    // する」 — reverse every velocity, change the base colour's tone, and run
+    // the computation. Pressed on a stopped model it starts it, as R would;
+    // on a running one it leaves it running.
+    gas::Control c = default_scene();
+    gas::take_step(c, gas::never, nullptr);
+    const std::vector<gas::Ball> before = c.gas.balls;
+    gas::press_key(c, 'S');
+    REQUIRE(c.stopped);
+    CHECK(gas::press_key(c, 'B') == gas::KeyEffect::none);
+    CHECK_FALSE(c.stopped);
+    CHECK(c.tone == 1);
+    CHECK(c.gas.balls[0].vx == -before[0].vx);
+    gas::press_key(c, 'b');
+    CHECK_FALSE(c.stopped);
+    CHECK(c.tone == 0);
+  }
+
   TEST_CASE("keys > and <: T0 doubled and halved and nothing else changed") {
     gas::Control c = default_scene();
     gas::take_step(c, gas::never, nullptr);

@@ -265,9 +265,10 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
          R"( balls, steps beyond
   --help           show this text
 
-keys (in a terminal, without Enter): S stop, R run, B reverse all velocities,
-  > double T0, < halve T0, 0 redraw the screen, E end; beyond the article,
-  A restarts the averages of the statistics (--mode stats, --csv).
+keys (in a terminal, without Enter): S stop, R run, B reverse all velocities
+  and run on (a stopped model too), > double T0, < halve T0, 0 redraw the
+  screen, E end; beyond the article, A restarts the averages of the
+  statistics (--mode stats, --csv).
 In a terminal, a resized window gets the screen prepared again at its size
 (--cols and --rows keep theirs, cut to the window); a window too small for
 the table says so until it grows.

@@ -90,6 +90,18 @@ TEST_SUITE("exercise-10") {
     CHECK(control.gas.balls[0].vx == before[0].vx);
   }
 
+  TEST_CASE("exercise-10 B on a stopped model reverses it and goes on computing") {
+    Control control = three_balls();
+    control.stopped = true;
+    const double vx = control.gas.balls[0].vx;
+    CHECK(effect(control, 'B') == none);
+    CHECK(control.gas.balls[0].vx == -vx);
+    INFO(
+        "the article's B: reverse, change the tone, and go on computing: stopped no "
+        "more");
+    CHECK_FALSE(control.stopped);
+  }
+
   TEST_CASE("exercise-10 B tells the observer before it rewrites the rows") {
     // An observer that notes what the rows were when it was told.
     struct Listener final : gas::CollisionObserver {
@@ -203,6 +215,7 @@ TEST_SUITE("exercise-10") {
             balls = reversed.balls;
             tone = 1 - tone;
             must_find = true;
+            stopped = false;  // and go on computing
             break;
           }
           case 'E':
