@@ -231,7 +231,8 @@ TEST_SUITE("kinetic-theory") {
   TEST_CASE("blocking: every level's error is that of its block means, with n - 1") {
     // By hand: 1, 3, 5, 7. Level 0: mean 4, squares 9 + 1 + 1 + 9 = 20,
     // e_0 = sqrt(20 / (3 x 4)); level 1: blocks 2 and 6, e_1 = sqrt(8 / (1 x 2))
-    // = 2; level 2: one block, no error.
+    // = 2; level 2: one block, no error. (Why 1e-15: each side is a few
+    // roundings of numbers of order 1, a few units of 1.1e-16.)
     gas::BlockingAnalysis hand;
     for (const double x : {1.0, 3.0, 5.0, 7.0}) hand.add(x);
     const std::vector<gas::BlockingLevel> levels = hand.levels();
