@@ -94,13 +94,18 @@ std::string quoted(const std::string& word) {
 
 ProgramRun run_program(const std::vector<std::string>& arguments,
                        const std::string& input) {
+  return run_program_in(GAS_SOURCE_DIR, arguments, input);
+}
+
+ProgramRun run_program_in(const std::string& folder,
+                          const std::vector<std::string>& arguments,
+                          const std::string& input) {
   const Scratch scratch;
   const std::string in = scratch.file("in");
   const std::string out = scratch.file("out");
   const std::string err = scratch.file("err");
   std::ofstream(in, std::ios::binary) << input;
-  std::string command =
-      fmt::format("cd {} && {}", quoted(GAS_SOURCE_DIR), quoted(GAS_PROGRAM));
+  std::string command = fmt::format("cd {} && {}", quoted(folder), quoted(GAS_PROGRAM));
   for (const std::string& argument : arguments)
     command += fmt::format(" {}", quoted(argument));
   command += fmt::format(" <{} >{} 2>{}", quoted(in), quoted(out), quoted(err));

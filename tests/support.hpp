@@ -52,6 +52,12 @@ struct ProgramRun {
 ProgramRun run_program(const std::vector<std::string>& arguments,
                        const std::string& input = "");
 
+// The same, run from the folder `folder`: a scene named that is no file
+// there is looked for by name (stages/program/scene_lookup.hpp).
+ProgramRun run_program_in(const std::string& folder,
+                          const std::vector<std::string>& arguments,
+                          const std::string& input = "");
+
 // Compares `actual` with the golden file data/<relative>. With the
 // environment variable GAS_UPDATE_GOLDEN=1 the golden file is rewritten
 // instead (then read the diff before committing it).

@@ -15,7 +15,9 @@
 #include "beyond/strategy.hpp"
 #include "program/key_source.hpp"
 #include "program/run_outputs.hpp"
+#include "program/scene_lookup.hpp"
 #include "program/terminal.hpp"
+#include "program/version.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
 
@@ -298,11 +300,18 @@ class ConsoleRun {
 
 int run_console(const std::vector<std::string>& arguments) {
   try {
-    const Options options = parse_options(arguments);
+    Options options = parse_options(arguments);
     if (options.help) {
       fmt::print("{}", help_text());
       return 0;
     }
+    if (options.version) {
+      fmt::print("{}", version_text());
+      return 0;
+    }
+    // A scene named that is no file: a teaching scene (scene_lookup.hpp).
+    if (options.scene_path)
+      options.scene_path = find_scene(*options.scene_path, scene_folders());
     Gas gas = options.scene_path ? read_scene_file(*options.scene_path)
                                  : parse_scene(default_scene_text, default_scene_name);
     ConsoleRun run(options, std::move(gas));

@@ -86,7 +86,7 @@ class ArgumentReader {
 // Reads one option (its value, if it takes one) into the options.
 using OptionReader = void (*)(ArgumentReader&, Options&);
 
-// A flag: --step, --trace, --bell, --help.
+// A flag: --step, --trace, --bell, --help, --version.
 template <bool Options::*flag>
 void read_flag(ArgumentReader& reader, Options& options) {
   reader.no_value();
@@ -185,6 +185,7 @@ constexpr KnownOption known_options[] = {
     {"--bell", read_flag<&Options::bell>},
     {"--help", read_flag<&Options::help>},
     {"-h", read_flag<&Options::help>},
+    {"--version", read_flag<&Options::version>},
 };
 
 // How the named option is read; none for a name that is no option's.
@@ -231,9 +232,15 @@ std::string help_text() {
 usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
            [--mode balls|trails|stats|none] [--events FILE] [--dump FILE] [--csv FILE]
            [--cols N] [--rows N] [--step] [--trace] [--bell]
-           [--strategy scan|table|grid] [--pictures collisions|steps] [--help]
+           [--strategy scan|table|grid] [--pictures collisions|steps]
+       gas --help | --version
 
-  SCENE            a scene file (see data/README.md); none: the built-in default scene
+  SCENE            a scene file (format: data/README.md or `man gas`), or a
+                   teaching scene's name: crowd, crowd.scene, hard/corner; a
+                   name that is no file here is looked for in
+                   share/gas-on-the-display beside the program's bin/ (for a
+                   program in its build folder: the source tree's data/);
+                   none: the built-in default scene
   --frames N       take N display steps, then exit
   --until T        run until model time T, then exit (absolute: a --dump starts at its T)
   --keys KEYS      press one key per display step ('.' for none) instead of the keyboard
@@ -263,7 +270,8 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
                    up to )" +
          std::to_string(most_balls_for_every_collision) +
          R"( balls, steps beyond
-  --help           show this text
+  --help, -h       show this text
+  --version        show the program's version and the git commit it is built from
 
 keys (in a terminal, without Enter): S stop, R run, B reverse all velocities
   and run on (a stopped model too), > double T0, < halve T0, 0 redraw the

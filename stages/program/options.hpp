@@ -25,7 +25,7 @@ class UsageError : public std::runtime_error {
 
 // What the command line asks for; an option not given keeps its default here.
 struct Options {
-  std::optional<std::string> scene_path;   // none: the built-in default scene
+  std::optional<std::string> scene_path;   // a file or a scene's name; none: the default
   std::optional<long long> frames;         // --frames N: N display steps, then exit
   std::optional<double> until;             // --until T: stop at model time T
   std::optional<std::string> keys;         // --keys: one key per display step
@@ -40,6 +40,7 @@ struct Options {
   bool trace = false;                      // --trace
   bool bell = false;                       // --bell
   bool help = false;                       // --help
+  bool version = false;                    // --version
   std::optional<Strategy> strategy;        // --strategy; none: chosen by N
   std::optional<PictureRule> pictures;     // --pictures; none: chosen by N
 };

@@ -1,0 +1,226 @@
+// The program installed like any Unix program (issue 25): scenes by name,
+// --version, and the manual page in step with --help.
+//
+// - Scenes by name: `gas crowd`, `gas crowd.scene`, `gas hard/corner` from a
+//   folder that holds no scene run the source tree's scenes (the program is
+//   run from its build folder), the same frames as the file named; a name
+//   found nowhere: exit 2, nothing on stdout, and a message that lists every
+//   place looked at.
+// - scene_folders: a program inside its build folder looks in the source
+//   tree's data/, an installed one in share/gas-on-the-display beside its
+//   bin/ (a folder whose name only begins like the build folder's is not
+//   inside it); find_scene: a file first, then NAME.scene, never a folder.
+// - --version: "gas VERSION (...)" with CMake's project version, then the
+//   commit, which is known when the source tree is a git checkout.
+// - The manual page (stages/program/gas.1.in) names every option of --help
+//   and no other, every key of --help's key list and no other, and every
+//   exit status --help gives.
+// Not one of the article's stages; the reference: README.md ("Installing").
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "program/options.hpp"
+#include "program/scene_lookup.hpp"
+#include "program/version.hpp"
+#include "stage2_input.hpp"
+#include "support.hpp"
+
+using gas::testing::read_file;
+using gas::testing::run_program;
+using gas::testing::run_program_in;
+using gas::testing::Scratch;
+using gas::testing::source_path;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every match of the regex's first group in `text`, as a set.
+std::set<std::string> matches_of(const std::string& text, const std::string& pattern) {
+  std::set<std::string> found;
+  const std::regex regex(pattern);
+  for (auto match = std::sregex_iterator(text.begin(), text.end(), regex);
+       match != std::sregex_iterator(); ++match) {
+    found.insert((*match)[1].str());
+  }
+  return found;
+}
+
+// The part of `text` from the line starting with `from` to the next line
+// starting with `to` (to the end if there is none).
+std::string section_of(const std::string& text, const std::string& from,
+                       const std::string& to) {
+  const std::size_t start = text.find("\n" + from);
+  REQUIRE_MESSAGE(start != std::string::npos, "no section " << from);
+  const std::size_t end = text.find("\n" + to, start + 1);
+  return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+// The manual page's source.
+std::string manual_page() {
+  return read_file(source_path("stages/program/gas.1.in"));
+}
+
+}  // namespace
+
+TEST_SUITE("install") {
+  TEST_CASE("scenes by name: crowd and crowd.scene and hard/corner run from any folder") {
+    const Scratch elsewhere;  // a folder with no scene in it
+    const auto by_file = run_program({"data/crowd.scene", "--frames", "2"});
+    REQUIRE(by_file.status == 0);
+    for (const char* name : {"crowd", "crowd.scene"}) {
+      CAPTURE(name);
+      const auto by_name =
+          run_program_in(elsewhere.path.string(), {name, "--frames", "2"});
+      CHECK(by_name.status == 0);
+      CHECK(by_name.err.empty());
+      CHECK(by_name.out == by_file.out);
+    }
+    // --trace says which file stage 2 read: the source tree's, found by name.
+    const auto traced = run_program_in(elsewhere.path.string(),
+                                       {"hard/corner", "--trace", "--frames", "1"});
+    CHECK(traced.status == 0);
+    CHECK(traced.out.find(fmt::format("stage 2  input: 1 ball from {}\n",
+                                      source_path("data/hard/corner.scene"))) !=
+          std::string::npos);
+  }
+
+  TEST_CASE("scenes by name: a name found nowhere says where it looked and exits 2") {
+    const Scratch elsewhere;
+    const auto run = run_program_in(elsewhere.path.string(), {"crowdd", "--frames", "1"});
+    CHECK(run.status == 2);
+    CHECK(run.out.empty());
+    CHECK(run.err ==
+          fmt::format(
+              "crowdd: no such scene file (looked in the current folder and at {})\n",
+              source_path("data/crowdd.scene")));
+    // A folder of the scenes is no scene: not taken for one.
+    const auto folder =
+        run_program_in(elsewhere.path.string(), {"hard", "--frames", "1"});
+    CHECK(folder.status == 2);
+    CHECK(folder.out.empty());
+    CHECK(folder.err.find(source_path("data/hard.scene")) != std::string::npos);
+  }
+
+  TEST_CASE(
+      "scene_folders: the build's source data/ or share/ beside an installed bin/") {
+    const fs::path build = "/work/project/build";
+    const fs::path source = "/work/project/data";
+    const fs::path share = "../share/gas-on-the-display";
+    using Folders = std::vector<fs::path>;
+    CHECK(gas::scene_folders(build / "gas", build, source, share) == Folders{source});
+    CHECK(gas::scene_folders(build / "tests" / "gas_tests", build, source, share) ==
+          Folders{source});
+    CHECK(gas::scene_folders("/usr/bin/gas", build, source, share) ==
+          Folders{"/usr/share/gas-on-the-display"});
+    CHECK(gas::scene_folders("/tmp/p/bin/gas", build, source, share) ==
+          Folders{"/tmp/p/share/gas-on-the-display"});
+    // Its name begins like the build folder's, but it is another folder.
+    CHECK(gas::scene_folders("/work/project/build-deb/gas", build, source, share) ==
+          Folders{"/work/project/share/gas-on-the-display"});
+  }
+
+  TEST_CASE(
+      "find_scene: a file as it is or else NAME.scene in a folder but never a folder") {
+    const Scratch scratch;
+    const fs::path scenes = scratch.path / "scenes";
+    fs::create_directories(scenes / "hard");
+    for (const char* name : {"crowd.scene", "hard/corner.scene"})
+      std::ofstream(scenes / name) << "a 1\n";
+    const std::vector<fs::path> folders{scenes};
+    const std::string here = source_path("data/default.scene");  // an existing file
+    CHECK(gas::find_scene(here, folders) == here);
+    CHECK(gas::find_scene("crowd", folders) == (scenes / "crowd.scene").string());
+    CHECK(gas::find_scene("crowd.scene", folders) == (scenes / "crowd.scene").string());
+    CHECK(gas::find_scene("hard/corner", folders) ==
+          (scenes / "hard/corner.scene").string());
+    // An absolute path is not looked up: stage 2 says it is missing.
+    CHECK(gas::find_scene("/no/such.scene", folders) == "/no/such.scene");
+    CHECK_THROWS_WITH_AS(
+        gas::find_scene("hard", folders),
+        fmt::format("hard: no such scene file (looked in the current folder and at {})",
+                    (scenes / "hard.scene").string())
+            .c_str(),
+        gas::SceneError);
+    CHECK_THROWS_WITH_AS(
+        gas::find_scene("x", {scenes, scratch.path}),
+        fmt::format(
+            "x: no such scene file (looked in the current folder and at {} and {})",
+            (scenes / "x.scene").string(), (scratch.path / "x.scene").string())
+            .c_str(),
+        gas::SceneError);
+  }
+
+  TEST_CASE("--version: the name and CMake's project version and the commit") {
+    const auto run = run_program({"--version"});
+    CHECK(run.status == 0);
+    CHECK(run.err.empty());
+    CHECK(run.out == gas::version_text());
+    std::smatch match;
+    REQUIRE_MESSAGE(
+        std::regex_match(run.out, match,
+                         std::regex("gas ([0-9]+\\.[0-9]+\\.[0-9]+) \\(Gas on "
+                                    "the display[^\n]*\\)\ncommit ([^\n]+)\n")),
+        run.out);
+    CHECK(match[1] == GAS_VERSION);
+    // Built from a checkout: git's description of it, e.g. f0385bc0e1a2 or
+    // f0385bc0e1a2-dirty (v1.0.0-3-gf0385bc0e1a2 once tagged).
+    if (fs::exists(source_path(".git"))) {
+      CHECK(std::regex_match(match[2].str(),
+                             std::regex("([^ ]+-g)?[0-9a-f]{12,40}(-dirty)?")));
+    } else {
+      CHECK(match[2] == "unknown (not built from a git checkout)");
+    }
+  }
+
+  TEST_CASE("the manual page names every option of --help and no other") {
+    const std::string help = gas::help_text();
+    const std::string page = manual_page();
+    // An option starts a word: the hyphen of billiard-ball is none.
+    const auto in_help = matches_of(help, "(?:^|[\\s\\[(|])(--?[a-z][a-z0-9-]*)");
+    // In the page an option's hyphens are \- (hyphens that copy as such).
+    std::set<std::string> in_page;
+    for (const std::string& option :
+         matches_of(page, "(?:^|[\\s\\[(|\"])((?:\\\\-){1,2}[a-z][a-z0-9-]*)"))
+      in_page.insert(std::regex_replace(option, std::regex("\\\\-"), "-"));
+    REQUIRE(in_help.count("--frames") == 1);  // the pattern reads --help
+    for (const std::string& option : in_help) {
+      CAPTURE(option);
+      CHECK_MESSAGE(in_page.count(option) == 1,
+                    "add " << option << " to stages/program/gas.1.in (see its top)");
+    }
+    for (const std::string& option : in_page) {
+      CAPTURE(option);
+      CHECK_MESSAGE(in_help.count(option) == 1,
+                    option << " is in the manual page but not in --help");
+    }
+  }
+
+  TEST_CASE("the manual page names every key and exit status of --help") {
+    const std::string help = gas::help_text();
+    const std::string page = manual_page();
+    // --help's keys: "S stop, R run, ..., E end; beyond the article, A restarts".
+    const std::string key_list = section_of(help, "keys", "In a terminal");
+    const auto help_keys = matches_of(key_list, "(?:[:,;]|\n) +(\\S) [a-z]");
+    const auto page_keys =
+        matches_of(section_of(page, ".SH KEYS", ".SH "), "\n\\.B (\\S)\n");
+    CHECK(help_keys == std::set<std::string>{"S", "R", "B", ">", "<", "0", "E", "A"});
+    CHECK(page_keys == help_keys);
+    const std::string help_statuses = help.substr(help.find("Exit status:"));
+    const std::string page_statuses = section_of(page, ".SH EXIT STATUS", ".SH ");
+    const auto statuses = matches_of(help_statuses, "\\b([0-9]{1,3})\\b");
+    CHECK(statuses == std::set<std::string>{"0", "1", "2", "128", "129", "130", "143"});
+    const auto in_page = matches_of(page_statuses, "\\b([0-9]{1,3})\\b");
+    for (const std::string& status : statuses) {
+      CAPTURE(status);
+      CHECK(in_page.count(status) == 1);
+    }
+  }
+}
