@@ -53,6 +53,7 @@ GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
           interior_virial - earlier.interior_virial,
           interior_time - earlier.interior_time,
           interior_energy - earlier.interior_energy,
+          interior_speed - earlier.interior_speed,
           ball_collisions - earlier.ball_collisions,
           interior_collisions - earlier.interior_collisions};
 }
@@ -131,12 +132,15 @@ double GasStatistics::interior_time_of(const Ball& ball, double until) const {
 }
 // [/anchor: interior-time]
 
-// A flight's time inside the interior, and its v^2 times that time (the
-// speed is constant along a flight).
+// A flight's time inside the interior, and its v^2 and v times that time
+// (the speed is constant along a flight).
 void GasStatistics::add_interior_flight(Sums& s, const Ball& ball, double until) const {
   const double inside = interior_time_of(ball, until);
+  if (inside == 0) return;
+  const double square = ball.vx * ball.vx + ball.vy * ball.vy;
   s.interior_time += inside;
-  s.interior_energy += (ball.vx * ball.vx + ball.vy * ball.vy) * inside;
+  s.interior_energy += square * inside;
+  s.interior_speed += std::sqrt(square) * inside;
 }
 
 // [anchor: collision-sums]
@@ -292,8 +296,8 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return rate;
     case collision_rate_minus_theory_q:
       return rate - enskog_collision_rate(eta, radius_, kT_inside);
-    case mean_free_path_q:  // the mean speed over the interior's rate
-      return s.speed_time / (t * n) / rate;
+    case mean_free_path_q:  // the interior's mean speed over its rate
+      return s.interior_speed / s.interior_time / rate;
     case wall_middle_pressure_q:
       return s.push_x_middle / t;
     case quantity_count:

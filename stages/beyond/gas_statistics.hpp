@@ -79,8 +79,8 @@ struct MeasuredFigures {
       collision_rate;  // the same in the interior: 2 (its collisions) / (its ball-time)
   Average collision_rate_minus_theory;  // the interior's rate - Enskog's at eta_int,
                                         // sample by sample
-  Average mean_free_path;  // mean speed / the interior's rate (length, radii a = 1 units)
-  Average pair_contact;    // g(2a+) among the balls of the interior
+  Average mean_free_path;               // the interior's mean speed / its rate (a length)
+  Average pair_contact;                 // g(2a+) among the balls of the interior
   Average wall_contact_pressure;  // kT n(contact) at the walls x = 0, A1 (their middles)
   Average wall_middle_pressure;   // the push on those middles: P there
   std::vector<double> speed_fractions;  // the histogram: ball-time fractions per bin
@@ -130,6 +130,7 @@ class GasStatistics final : public CollisionObserver {
     double interior_virial = 0;  // the same, for contacts inside the interior
     double interior_time = 0;    // ball-time spent inside the interior
     double interior_energy = 0;  // integral over that time of v^2 (2 kT per ball)
+    double interior_speed = 0;   // and of v
     long long ball_collisions = 0;
     long long interior_collisions =
         0;  // of two balls, their midpoint inside the interior
@@ -165,7 +166,7 @@ class GasStatistics final : public CollisionObserver {
   // A ball's speed leaves the sums (change -1) or comes in (+1) at `time`.
   void count_speed(const Ball& ball, double time, int change);
   double interior_time_of(const Ball& ball, double until) const;  // of its flight
-  // Its flight's time inside, and v^2 times it, into the sums `s`.
+  // Its flight's time inside, and v^2 and v times it, into the sums `s`.
   void add_interior_flight(Sums& s, const Ball& ball, double until) const;
 
   std::size_t balls_ = 0;

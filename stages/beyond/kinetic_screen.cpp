@@ -180,7 +180,7 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
                         m.since + m.duration),
       fmt::format("{:<18}{:<22}{:<21}{}", "", "average +- error", "theory +- error",
                   "(theory)"),
-      row("mean speed", m.mean_speed, shown(t.mean_speed), "N balls, fixed E"),
+      row("mean speed", m.mean_speed, shown(t.mean_speed), "E fixed"),
       bulk("P walls' middles", m.wall_middle_pressure, k.pressure_theory,
            "bulk, reference"),
       fmt::format("{:<18}{:<22}{:<21}{}", "P whole walls", shown(m.pressure_box),
@@ -190,7 +190,7 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       fmt::format("{:<18}{:<22}{}", "Z box: walls, vir", shown(m.box_z_walls),
                   shown(m.box_z_virial)),
       bulk("Z bulk", m.bulk_z, k.bulk_z_theory,
-           fmt::format("reference (Henderson {})", shown(k.bulk_z_henderson))),
+           fmt::format("Henderson {}", shown(k.bulk_z_henderson))),
       fmt::format("{:<18}{:<22}{}", "  eta inside", shown(m.interior_area_fraction),
                   z_difference),
       row("  g(2a) inside", m.pair_contact,
@@ -198,11 +198,11 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       row("kT n at walls", m.wall_contact_pressure, shown(m.wall_middle_pressure.value),
           "P there"),
       bulk("collisions/ball", m.collision_rate, k.collision_rate_theory,
-           "Enskog, eta inside"),
+           "Enskog (inside)"),
       fmt::format("{:<18}{:<22}{}", "  whole box", shown(m.collision_rate_box),
                   "(box: walls too)"),
       bulk("mean free path", m.mean_free_path, k.mean_free_path_theory,
-           "Enskog, eta inside"),
+           "Enskog (inside)"),
   };
   draw_figures(screen, lines);  // stage 6: the lines at their places
   // Below them, after a blank row, the histogram, if there is room for it.
