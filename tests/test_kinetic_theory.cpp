@@ -4,15 +4,21 @@
 //
 // - The formulas themselves: the 2D Maxwell-Boltzmann mean, Henderson's Z
 //   and g(2a) through the virial theorem, Enskog's rate through the contact
-//   relation.
+//   relation; the mean speed of N balls at fixed energy against its density
+//   and against points drawn on the sphere.
 // - One ball: the wall push gives P (A1 - 2a)(A2 - 2a) = N kT exactly.
 // - A gas started with every ball at one speed relaxes to 2D Maxwell-
 //   Boltzmann: a Kolmogorov-Smirnov test on speeds sampled at well-separated
-//   times, and the mean speed.
-// - The equation of state at area fractions 0.1, 0.3 and 0.5: Z measured on
-//   the walls for N = 100 and N = 400, the wall correction (proportional to
-//   perimeter / area, so to 1 / sqrt(N)) extrapolated away, against
-//   Henderson; and Z against the collision rate through the contact relation.
+//   times, and the mean speed; the default scene's 7 balls keep the mean
+//   speed of fixed energy, not Maxwell's.
+// - The warm-up: L / lambda collisions of two balls a ball, kept.
+// - The equation of state at area fractions 0.1, 0.3 and 0.5, in the
+//   interior of a box of 1024 balls: Z against the reference at the
+//   interior's density, and the interior's collision rate against Enskog's
+//   there, each by its difference sample by sample; the box's Z from its
+//   walls and from its collisions (the virial theorem) and the contact
+//   relation; g(2a+) and the contact theorem at the walls.
+// - The H-theorem and its reversal by B; the interior's time across B.
 //
 // Every run is seeded (the lattice start and the directions), so the checks
 // give the same result every time; the tolerances are statistical, from the
@@ -129,8 +135,8 @@ double ks_distance(std::vector<double> speeds, double kT) {
 // The equation of state of the bulk, measured in the interior of a box of
 // 1024 balls, against the reference at the interior's own density; the box's
 // own Z from its walls and from its collisions, which must agree; and the
-// interior denser than the box on average (the walls thin the gas beside
-// them). `length`: time units for about 10^6 collisions.
+// interior denser than N / A (N / A counts the strip of width a along each
+// wall, where no centre goes; lesson 11). `length`: time units for about 10^6 collisions.
 void check_equation_of_state(double eta, double length, unsigned seed) {
   const Measured r = measure_run(32, eta, length, seed);
   const gas::MeasuredFigures& m = r.m;
