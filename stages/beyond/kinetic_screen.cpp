@@ -220,6 +220,41 @@ struct Column {
   double (*value)(const Figures& f, const KineticFigures& k);
 };
 
+// Readers for the columns: an average measured (its value or its error), a
+// theory with its error, a plain figure of kinetic theory.
+template <Average MeasuredFigures::*average>
+double measured_value(const Figures&, const KineticFigures& k) {
+  return (k.measured.*average).value;
+}
+template <Average MeasuredFigures::*average>
+double measured_error(const Figures&, const KineticFigures& k) {
+  return (k.measured.*average).error;
+}
+template <Average KineticFigures::*theory>
+double theory_value(const Figures&, const KineticFigures& k) {
+  return (k.*theory).value;
+}
+template <Average KineticFigures::*theory>
+double theory_error(const Figures&, const KineticFigures& k) {
+  return (k.*theory).error;
+}
+// A difference from the theory: only where the theory applies (many balls).
+template <Average MeasuredFigures::*average>
+double deviation_value(const Figures&, const KineticFigures& k) {
+  return k.many_balls ? (k.measured.*average).value : not_known;
+}
+template <Average MeasuredFigures::*average>
+double deviation_error(const Figures&, const KineticFigures& k) {
+  return k.many_balls ? (k.measured.*average).error : not_known;
+}
+template <double KineticFigures::*figure>
+double kinetic_value(const Figures&, const KineticFigures& k) {
+  return k.*figure;
+}
+
+using M = MeasuredFigures;
+using K = KineticFigures;
+
 // The columns in order: the article's figures, then kinetic theory's (the
 // naming convention in data/README.md). A block of columns is appended at
 // the end.
@@ -244,161 +279,54 @@ constexpr Column columns[] = {
     {"averages_since",
      [](const Figures&, const KineticFigures& k) { return k.measured.since; }},
     {"H", [](const Figures&, const KineticFigures& k) { return k.measured.h_now; }},
-    {"H_noise", [](const Figures&, const KineticFigures& k) { return k.h_noise; }},
-    {"H_noise_spread",
-     [](const Figures&, const KineticFigures& k) { return k.h_noise_spread; }},
-    {"mean_speed_average",
-     [](const Figures&, const KineticFigures& k) { return k.measured.mean_speed.value; }},
-    {"mean_speed_average_error",
-     [](const Figures&, const KineticFigures& k) { return k.measured.mean_speed.error; }},
+    {"H_noise", kinetic_value<&K::h_noise>},
+    {"H_noise_spread", kinetic_value<&K::h_noise_spread>},
+    {"mean_speed_average", measured_value<&M::mean_speed>},
+    {"mean_speed_average_error", measured_error<&M::mean_speed>},
     {"mean_speed_average_theory",
      [](const Figures&, const KineticFigures& k) { return k.theory.mean_speed; }},
-    {"pressure",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.wall_middle_pressure.value;
-     }},
-    {"pressure_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.wall_middle_pressure.error;
-     }},
-    {"pressure_theory",
-     [](const Figures&, const KineticFigures& k) { return k.pressure_theory.value; }},
-    {"pressure_theory_error",
-     [](const Figures&, const KineticFigures& k) { return k.pressure_theory.error; }},
-    {"pressure_box",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.pressure_box.value;
-     }},
-    {"pressure_box_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.pressure_box.error;
-     }},
-    {"pressure_box_x",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.pressure_box_x.value;
-     }},
-    {"pressure_box_x_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.pressure_box_x.error;
-     }},
-    {"pressure_box_y",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.pressure_box_y.value;
-     }},
-    {"pressure_box_y_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.pressure_box_y.error;
-     }},
-    {"Z",
-     [](const Figures&, const KineticFigures& k) { return k.measured.bulk_z.value; }},
-    {"Z_error",
-     [](const Figures&, const KineticFigures& k) { return k.measured.bulk_z.error; }},
-    {"Z_theory",
-     [](const Figures&, const KineticFigures& k) { return k.bulk_z_theory.value; }},
-    {"Z_theory_error",
-     [](const Figures&, const KineticFigures& k) { return k.bulk_z_theory.error; }},
-    {"Z_deviation",
-     [](const Figures&, const KineticFigures& k) {
-       return k.many_balls ? k.measured.bulk_z_minus_theory.value : not_known;
-     }},
-    {"Z_deviation_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.many_balls ? k.measured.bulk_z_minus_theory.error : not_known;
-     }},
-    {"Z_henderson",
-     [](const Figures&, const KineticFigures& k) { return k.bulk_z_henderson; }},
-    {"eta_interior",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.interior_area_fraction.value;
-     }},
-    {"eta_interior_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.interior_area_fraction.error;
-     }},
-    {"kT_interior", [](const Figures&,
-                       const KineticFigures& k) { return k.measured.interior_kT.value; }},
-    {"kT_interior_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.interior_kT.error;
-     }},
-    {"Z_box_walls", [](const Figures&,
-                       const KineticFigures& k) { return k.measured.box_z_walls.value; }},
-    {"Z_box_walls_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.box_z_walls.error;
-     }},
-    {"Z_box_virial",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.box_z_virial.value;
-     }},
-    {"Z_box_virial_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.box_z_virial.error;
-     }},
-    {"collision_rate",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.collision_rate.value;
-     }},
-    {"collision_rate_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.collision_rate.error;
-     }},
-    {"collision_rate_theory",
-     [](const Figures&, const KineticFigures& k) {
-       return k.collision_rate_theory.value;
-     }},
-    {"collision_rate_theory_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.collision_rate_theory.error;
-     }},
-    {"collision_rate_deviation",
-     [](const Figures&, const KineticFigures& k) {
-       return k.many_balls ? k.measured.collision_rate_minus_theory.value : not_known;
-     }},
-    {"collision_rate_deviation_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.many_balls ? k.measured.collision_rate_minus_theory.error : not_known;
-     }},
-    {"collision_rate_box",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.collision_rate_box.value;
-     }},
-    {"collision_rate_box_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.collision_rate_box.error;
-     }},
-    {"mean_free_path",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.mean_free_path.value;
-     }},
-    {"mean_free_path_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.mean_free_path.error;
-     }},
-    {"mean_free_path_theory",
-     [](const Figures&, const KineticFigures& k) {
-       return k.mean_free_path_theory.value;
-     }},
-    {"mean_free_path_theory_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.mean_free_path_theory.error;
-     }},
-    {"g_contact", [](const Figures&,
-                     const KineticFigures& k) { return k.measured.pair_contact.value; }},
-    {"g_contact_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.pair_contact.error;
-     }},
-    {"g_contact_theory",
-     [](const Figures&, const KineticFigures& k) { return k.pair_contact_theory; }},
-    {"wall_contact_pressure",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.wall_contact_pressure.value;
-     }},
-    {"wall_contact_pressure_error",
-     [](const Figures&, const KineticFigures& k) {
-       return k.measured.wall_contact_pressure.error;
-     }},
+    {"pressure", measured_value<&M::wall_middle_pressure>},
+    {"pressure_error", measured_error<&M::wall_middle_pressure>},
+    {"pressure_theory", theory_value<&K::pressure_theory>},
+    {"pressure_theory_error", theory_error<&K::pressure_theory>},
+    {"pressure_box", measured_value<&M::pressure_box>},
+    {"pressure_box_error", measured_error<&M::pressure_box>},
+    {"pressure_box_x", measured_value<&M::pressure_box_x>},
+    {"pressure_box_x_error", measured_error<&M::pressure_box_x>},
+    {"pressure_box_y", measured_value<&M::pressure_box_y>},
+    {"pressure_box_y_error", measured_error<&M::pressure_box_y>},
+    {"Z", measured_value<&M::bulk_z>},
+    {"Z_error", measured_error<&M::bulk_z>},
+    {"Z_theory", theory_value<&K::bulk_z_theory>},
+    {"Z_theory_error", theory_error<&K::bulk_z_theory>},
+    {"Z_deviation", deviation_value<&M::bulk_z_minus_theory>},
+    {"Z_deviation_error", deviation_error<&M::bulk_z_minus_theory>},
+    {"Z_henderson", kinetic_value<&K::bulk_z_henderson>},
+    {"eta_interior", measured_value<&M::interior_area_fraction>},
+    {"eta_interior_error", measured_error<&M::interior_area_fraction>},
+    {"kT_interior", measured_value<&M::interior_kT>},
+    {"kT_interior_error", measured_error<&M::interior_kT>},
+    {"Z_box_walls", measured_value<&M::box_z_walls>},
+    {"Z_box_walls_error", measured_error<&M::box_z_walls>},
+    {"Z_box_virial", measured_value<&M::box_z_virial>},
+    {"Z_box_virial_error", measured_error<&M::box_z_virial>},
+    {"collision_rate", measured_value<&M::collision_rate>},
+    {"collision_rate_error", measured_error<&M::collision_rate>},
+    {"collision_rate_theory", theory_value<&K::collision_rate_theory>},
+    {"collision_rate_theory_error", theory_error<&K::collision_rate_theory>},
+    {"collision_rate_deviation", deviation_value<&M::collision_rate_minus_theory>},
+    {"collision_rate_deviation_error", deviation_error<&M::collision_rate_minus_theory>},
+    {"collision_rate_box", measured_value<&M::collision_rate_box>},
+    {"collision_rate_box_error", measured_error<&M::collision_rate_box>},
+    {"mean_free_path", measured_value<&M::mean_free_path>},
+    {"mean_free_path_error", measured_error<&M::mean_free_path>},
+    {"mean_free_path_theory", theory_value<&K::mean_free_path_theory>},
+    {"mean_free_path_theory_error", theory_error<&K::mean_free_path_theory>},
+    {"g_contact", measured_value<&M::pair_contact>},
+    {"g_contact_error", measured_error<&M::pair_contact>},
+    {"g_contact_theory", kinetic_value<&K::pair_contact_theory>},
+    {"wall_contact_pressure", measured_value<&M::wall_contact_pressure>},
+    {"wall_contact_pressure_error", measured_error<&M::wall_contact_pressure>},
 };
 
 }  // namespace
