@@ -36,9 +36,9 @@ TEST_SUITE("kinetic-theory") {
     big_kinetic.bulk_z_theory = {2.0637755, 0.0021};
     // The rows with a theory column, and where they are.
     const std::vector<std::pair<std::string, std::size_t>> labels = {
-        {"mean speed", 7},      {"P walls' middles", 8}, {"Z bulk", 12},
-        {"  g(2a) inside", 14}, {"kT n at walls", 15},   {"collisions/ball", 16},
-        {"mean free path", 18}};
+        {"mean speed", 8},      {"P walls' middles", 9}, {"Z bulk", 13},
+        {"  g(2a) inside", 15}, {"kT n at walls", 16},   {"collisions/ball", 17},
+        {"mean free path", 19}};
     const int average_column = 20, theory_column = 42;
     for (const auto& [f, k] :
          {std::pair{&small, &small_kinetic}, std::pair{&big, &big_kinetic}}) {
@@ -48,9 +48,10 @@ TEST_SUITE("kinetic-theory") {
       CHECK(screen.lines[1].substr(2, 2) == "T ");
       CHECK(screen.lines[2].substr(2, 2) == "N ");
       CHECK(screen.lines[3].substr(2, 6) == "units:");
-      CHECK(screen.lines[4].substr(2, 2) == "H ");
-      CHECK(screen.lines[6].substr(average_column, 7) == "average");
-      CHECK(screen.lines[6].substr(theory_column, 6) == "theory");
+      CHECK(screen.lines[4].substr(2, 11) == "speeds now:");
+      CHECK(screen.lines[5].substr(2, 2) == "H ");
+      CHECK(screen.lines[7].substr(average_column, 7) == "average");
+      CHECK(screen.lines[7].substr(theory_column, 6) == "theory");
       for (const auto& [label, row] : labels) {
         CAPTURE(label);
         const std::string& line = screen.lines[row];
@@ -60,9 +61,9 @@ TEST_SUITE("kinetic-theory") {
         CHECK(line[theory_column] != ' ');  // a number, "-" or words
       }
       // The rows of two averages side by side: in the average and theory columns.
-      CHECK(screen.lines[10].substr(2, 7) == "  Px, P");
-      CHECK(screen.lines[11].substr(2, 12) == "Z box: walls");
-      for (const std::size_t row : {10, 11}) {
+      CHECK(screen.lines[11].substr(2, 7) == "  Px, P");
+      CHECK(screen.lines[12].substr(2, 12) == "Z box: walls");
+      for (const std::size_t row : {11, 12}) {
         CHECK(screen.lines[row][average_column] != ' ');
         CHECK(screen.lines[row][theory_column] != ' ');
       }
@@ -72,12 +73,12 @@ TEST_SUITE("kinetic-theory") {
     // The average with its error, in its column, and the theory with its own.
     TextScreen screen = gas::prepare_character_screen(80, 22);
     gas::draw_kinetic_figures(screen, big, big_kinetic);
-    CHECK(screen.lines[12].substr(average_column, 21) == "2.0625 +- 0.013      ");
-    CHECK(screen.lines[12].substr(theory_column, 16) == "2.0638 +- 0.0021");
+    CHECK(screen.lines[13].substr(average_column, 21) == "2.0625 +- 0.013      ");
+    CHECK(screen.lines[13].substr(theory_column, 16) == "2.0638 +- 0.0021");
     // A handful of balls: the bulk's theory in words, no number.
     gas::draw_kinetic_figures(screen, big, small_kinetic);
-    CHECK(screen.lines[12].substr(theory_column, 16) == "needs many balls");
-    CHECK(screen.lines[16].substr(theory_column, 16) == "needs many balls");
+    CHECK(screen.lines[13].substr(theory_column, 16) == "needs many balls");
+    CHECK(screen.lines[17].substr(theory_column, 16) == "needs many balls");
   }
 
   TEST_CASE(
@@ -87,7 +88,7 @@ TEST_SUITE("kinetic-theory") {
     gas::draw_kinetic_figures(screen, gas::testing::some_figures(),
                               gas::KineticFigures{});
     CHECK(screen.lines[1].substr(0, 14) == "| T 12.500000 ");
-    CHECK(screen.lines[4].substr(0, 4) == "| H ");
+    CHECK(screen.lines[5].substr(0, 4) == "| H ");
     for (const std::string& line : screen.lines) {
       CHECK(line.size() == 20);
       CHECK((line.back() == '|' || line.back() == '+'));

@@ -164,8 +164,9 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       fmt::format("N {}  eta {:.4f}  kT {:.5g}  drift {:+.1e}  momentum ({:.2g}, {:.2g})",
                   f.balls, t.area_fraction, t.kT, f.energy_drift, f.momentum.x,
                   f.momentum.y),
-      fmt::format("units: a, mass 1, k = 1, kT = E/N; speeds now: mean {}, rms {}",
-                  shown(f.mean_speed), shown(k.rms_speed)),
+      "units: a, mass 1, kT = E/N; P per unit length, rates per unit time",
+      fmt::format("speeds now: mean {}, rms {} (fixed by E)", shown(f.mean_speed),
+                  shown(k.rms_speed)),
       k.many_balls
           ? fmt::format("H {:.4f}  its noise for {} balls in {} bins: {:.2g} +- {:.2g}",
                         m.h_now, f.balls, m.speed_fractions.size(), k.h_noise,
