@@ -7,7 +7,8 @@
 #
 #   bash data/reports/kinetic-seeds.sh [GAS] > data/reports/kinetic-seeds.md
 #
-# GAS: the program (default build/gas). Two runs at a time (the machine may
+# GAS: the program (default build/gas); SEEDS="..." other seeds (default
+# 301 to 307). Two runs at a time (the machine may
 # be shared); about two CPU-minutes in all on an idle machine:
 # - 7 lattice starts, 1024 balls of radius 1 at eta = 0.5 (side 80.2121),
 #   every speed 1, to T = 2000;
@@ -17,7 +18,7 @@
 # units of averages against the whole run.
 set -euo pipefail
 gas=${1:-build/gas}
-seeds="301 302 303 304 305 306 307"
+seeds=${SEEDS:-"301 302 303 304 305 306 307"}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
