@@ -66,21 +66,41 @@ TEST_SUITE("kinetic-theory") {
   }
 
   TEST_CASE("Boltzmann's H: a Maxwell-Boltzmann sample shows only its noise") {
-    // 2N H is about chi-squared with (categories - 1) degrees of freedom: mean
-    // (bins) / (2N), spread sqrt(2 bins) / (2N), with bins + 1 categories.
-    // Each check allows the floor plus four spreads.
+    // 2N H of N Maxwellian speeds, kT their own mean v^2 / 2, is about
+    // chi-squared with bins - 1 degrees of freedom (boltzmann_h.hpp says why):
+    // mean (bins - 1) / (2N), spread sqrt(2 (bins - 1)) / (2N). One sample
+    // each: the floor plus four spreads.
     for (std::size_t n : {1000, 100000}) {
       const std::size_t bins = 20;
       const double kT = 0.8;
       const double width = 2.5 * std::sqrt(2 * kT) / bins;
       const double h = gas::boltzmann_h_of_speeds(maxwell_speeds(n, kT, 11), bins, width);
       const double floor = gas::boltzmann_h_noise_floor(bins, n);
-      const double spread = std::sqrt(2.0 * bins) / (2.0 * static_cast<double>(n));
+      const double spread = gas::boltzmann_h_noise_spread(bins, n);
       INFO(n << " balls: H = " << h << ", noise floor " << floor);
       CHECK(h >= 0);
       CHECK(h < floor + 4 * spread);
     }
-    CHECK(gas::boltzmann_h_noise_floor(20, 1000) == doctest::Approx(0.01));
+    CHECK(gas::boltzmann_h_noise_floor(20, 1000) == doctest::Approx(0.0095));
+    CHECK(gas::boltzmann_h_noise_spread(20, 1000) ==
+          doctest::Approx(std::sqrt(38.0) / 2000));
+    // The degrees of freedom, counted: the mean of 2N H over 400 samples of
+    // N = 4000 speeds in 12 bins (each expects 7 balls or more) is within
+    // three of its standard errors (sqrt(2 * 11 / 400) = 0.23) of
+    // bins - 1 = 11; a floor that forgot the energy's constraint (12) is
+    // four errors off.
+    const std::size_t n = 4000, bins = 12, samples = 400;
+    const double kT = 0.8, width = 2.5 * std::sqrt(2 * kT) / bins;
+    double sum = 0;
+    for (std::size_t k = 0; k < samples; ++k) {
+      const double h = gas::boltzmann_h_of_speeds(
+          maxwell_speeds(n, kT, static_cast<unsigned>(100 + k)), bins, width);
+      sum += 2.0 * n * h / samples;
+    }
+    const double expected = 2.0 * n * gas::boltzmann_h_noise_floor(bins, n);
+    CAPTURE(sum);
+    CHECK(expected == doctest::Approx(11));
+    CHECK(std::abs(sum - expected) < 3 * std::sqrt(2.0 * 11 / samples));
   }
 
   TEST_CASE(

@@ -4,6 +4,7 @@
 // with numbers that read back bit for bit. The physics behind the figures:
 // tests/test_kinetic_theory.cpp.
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <bit>
@@ -22,22 +23,23 @@ using gas::TextScreen;
 TEST_SUITE("kinetic-theory") {
   TEST_CASE("draw_kinetic_figures puts each figure at a fixed place whatever its value") {
     // Two different sets of figures: every label starts at the same cell, and
-    // the "now", "average" and "theory" columns start at the same columns, on
-    // both screens (lesson 11 has the layout).
+    // the "average" and "theory" columns start at the same columns, on both
+    // screens (lesson 11 has the layout); few balls say so in words.
     gas::Figures small;
     gas::Figures big = gas::testing::some_figures();
     big.time = 123456.75;
     big.wall_collisions = 1234567;
     gas::KineticFigures small_kinetic;
     gas::KineticFigures big_kinetic;
+    big_kinetic.many_balls = true;
     big_kinetic.measured.bulk_z = {2.0625, 0.0125};
-    big_kinetic.bulk_z_theory = 2.0637755;
+    big_kinetic.bulk_z_theory = {2.0637755, 0.0021};
     // The rows with a theory column, and where they are.
     const std::vector<std::pair<std::string, std::size_t>> labels = {
-        {"mean speed", 5},     {"rms speed", 6},       {"pressure", 7},
-        {"Z bulk", 10},        {"  eta inside", 11},   {"  g(2a) inside", 12},
-        {"kT n at walls", 13}, {"collision rate", 14}, {"mean free path", 15}};
-    const int now_column = 18, average_column = 28, theory_column = 50;
+        {"mean speed", 8},      {"P walls' middles", 9}, {"Z bulk", 13},
+        {"  g(2a) inside", 15}, {"kT n at walls", 16},   {"collisions/ball", 17},
+        {"mean free path", 19}};
+    const int average_column = 20, theory_column = 42;
     for (const auto& [f, k] :
          {std::pair{&small, &small_kinetic}, std::pair{&big, &big_kinetic}}) {
       TextScreen screen = gas::prepare_character_screen(80, 22);
@@ -45,34 +47,38 @@ TEST_SUITE("kinetic-theory") {
       gas::draw_kinetic_figures(screen, *f, *k);
       CHECK(screen.lines[1].substr(2, 2) == "T ");
       CHECK(screen.lines[2].substr(2, 2) == "N ");
-      CHECK(screen.lines[3].substr(2, 2) == "H ");
-      CHECK(screen.lines[4].substr(now_column, 3) == "now");
-      CHECK(screen.lines[4].substr(average_column, 7) == "average");
-      CHECK(screen.lines[4].substr(theory_column, 6) == "theory");
+      CHECK(screen.lines[3].substr(2, 6) == "units:");
+      CHECK(screen.lines[4].substr(2, 11) == "speeds now:");
+      CHECK(screen.lines[5].substr(2, 2) == "H ");
+      CHECK(screen.lines[7].substr(average_column, 7) == "average");
+      CHECK(screen.lines[7].substr(theory_column, 6) == "theory");
       for (const auto& [label, row] : labels) {
         CAPTURE(label);
         const std::string& line = screen.lines[row];
         CHECK(line.substr(2, label.size()) == label);
         CHECK(line[1] == ' ');
         CHECK(line[theory_column - 1] == ' ');
-        CHECK(line[theory_column] != ' ');  // a number, or "-" when not known
+        CHECK(line[theory_column] != ' ');  // a number, "-" or words
       }
       // The rows of two averages side by side: in the average and theory columns.
-      CHECK(screen.lines[8].substr(2, 7) == "  Px, P");
-      CHECK(screen.lines[9].substr(2, 12) == "Z box: walls");
-      for (const std::size_t row : {8, 9}) {
+      CHECK(screen.lines[11].substr(2, 7) == "  Px, P");
+      CHECK(screen.lines[12].substr(2, 12) == "Z box: walls");
+      for (const std::size_t row : {11, 12}) {
         CHECK(screen.lines[row][average_column] != ' ');
         CHECK(screen.lines[row][theory_column] != ' ');
       }
-      CHECK(screen.lines[5][now_column] != ' ');  // the mean speed now
       // The values read back: T with 6 decimals (so within 5e-7).
       CHECK(std::abs(std::stod(screen.lines[1].substr(4)) - f->time) <= 5e-7);
     }
-    // The average with its error, in its column.
+    // The average with its error, in its column, and the theory with its own.
     TextScreen screen = gas::prepare_character_screen(80, 22);
     gas::draw_kinetic_figures(screen, big, big_kinetic);
-    CHECK(screen.lines[10].substr(average_column, 21) == "2.0625 +- 0.013      ");
-    CHECK(screen.lines[10].substr(theory_column, 7) == "2.0638 ");
+    CHECK(screen.lines[13].substr(average_column, 21) == "2.0625 +- 0.013      ");
+    CHECK(screen.lines[13].substr(theory_column, 16) == "2.0638 +- 0.0021");
+    // A handful of balls: the bulk's theory in words, no number.
+    gas::draw_kinetic_figures(screen, big, small_kinetic);
+    CHECK(screen.lines[13].substr(theory_column, 16) == "needs many balls");
+    CHECK(screen.lines[17].substr(theory_column, 16) == "needs many balls");
   }
 
   TEST_CASE(
@@ -82,7 +88,7 @@ TEST_SUITE("kinetic-theory") {
     gas::draw_kinetic_figures(screen, gas::testing::some_figures(),
                               gas::KineticFigures{});
     CHECK(screen.lines[1].substr(0, 14) == "| T 12.500000 ");
-    CHECK(screen.lines[5].substr(0, 12) == "| mean speed");
+    CHECK(screen.lines[5].substr(0, 4) == "| H ");
     for (const std::string& line : screen.lines) {
       CHECK(line.size() == 20);
       CHECK((line.back() == '|' || line.back() == '+'));
@@ -143,16 +149,20 @@ TEST_SUITE("kinetic-theory") {
     f.display_step = 0.1;
     gas::KineticFigures k;
     k.measured.bulk_z = {2.0 / 3, 1.0 / 7};
-    k.bulk_z_theory = 1.0 / 9;
+    k.bulk_z_theory = {1.0 / 9, 1.0 / 13};
     k.measured.h_now = 1.0 / 11;
     const std::string row = gas::csv_row(f, k);
     const std::vector<std::string> fields = gas::testing::fields_of(row);
     const std::vector<std::string> names = gas::testing::fields_of(gas::csv_header());
-    REQUIRE(fields.size() == 44);
-    REQUIRE(names.size() == 44);
+    REQUIRE(fields.size() == names.size());
     auto same = [](const std::string& text, double value) {
       return std::bit_cast<std::uint64_t>(std::strtod(text.c_str(), nullptr)) ==
              std::bit_cast<std::uint64_t>(value);
+    };
+    auto field = [&](const std::string& name) {
+      const auto at = std::find(names.begin(), names.end(), name);
+      REQUIRE(at != names.end());
+      return fields[static_cast<std::size_t>(at - names.begin())];
     };
     CHECK(same(fields[0], f.time));
     CHECK(same(fields[1], f.display_step));
@@ -163,40 +173,79 @@ TEST_SUITE("kinetic-theory") {
     CHECK(same(fields[6], f.energy_drift));
     CHECK(same(fields[7], f.momentum.x));
     CHECK(same(fields[8], f.momentum.y));
-    CHECK(names[20] == "Z");
-    CHECK(names[21] == "Z_error");
-    CHECK(names[22] == "Z_theory");
-    CHECK(same(fields[20], k.measured.bulk_z.value));
-    CHECK(same(fields[21], k.measured.bulk_z.error));
-    CHECK(same(fields[22], k.bulk_z_theory));
-    CHECK(names[35] == "H");
-    CHECK(same(fields[35], k.measured.h_now));
-    CHECK(fields[13] == "nan");  // not measured yet
+    CHECK(same(field("Z"), k.measured.bulk_z.value));
+    CHECK(same(field("Z_error"), k.measured.bulk_z.error));
+    CHECK(same(field("Z_theory"), k.bulk_z_theory.value));
+    CHECK(same(field("Z_theory_error"), k.bulk_z_theory.error));
+    CHECK(same(field("H"), k.measured.h_now));
+    CHECK(field("mean_speed_average") == "nan");  // not measured yet
+    // One convention: every _error, _theory and _theory_error column names
+    // a column that is there; the box's figures end in _box (data/README.md).
+    for (const std::string& name : names) {
+      CAPTURE(name);
+      for (const std::string suffix : {"_theory_error", "_error", "_theory"}) {
+        if (name.size() > suffix.size() &&
+            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+          const std::string base = name.substr(0, name.size() - suffix.size());
+          CHECK(std::find(names.begin(), names.end(), base) != names.end());
+          break;
+        }
+      }
+    }
+    for (const char* box :
+         {"pressure_box", "collision_rate_box", "Z_box_walls", "Z_box_virial"})
+      CHECK(std::find(names.begin(), names.end(), box) != names.end());
+    // Names are unique.
+    std::vector<std::string> sorted = names;
+    std::sort(sorted.begin(), sorted.end());
+    CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+  }
+
+  TEST_CASE(
+      "H and its bins do not depend on the screen: --cols 40 and 160 write one CSV") {
+    // The kinetic scene (200 balls) to T = 5: the same file whatever the
+    // width (the histogram's bins are fixed; only its drawing follows the
+    // screen).
+    const gas::testing::Scratch scratch;
+    std::string files[2];
+    int k = 0;
+    for (const char* columns : {"40", "160"}) {
+      const std::string csv = scratch.file(fmt::format("h{}.csv", k));
+      const auto run = gas::testing::run_program({"data/kinetic.scene", "--mode", "stats",
+                                                  "--until", "5", "--csv", csv, "--cols",
+                                                  columns, "--rows", "30"});
+      REQUIRE(run.status == 0);
+      files[k++] = gas::testing::read_file(csv);
+    }
+    CHECK(files[0] == files[1]);
+    CHECK(files[0].find(",H,") != std::string::npos);
   }
 
   TEST_CASE("the key A restarts the averages at once and the CSV says since when") {
-    // The kinetic scene (200 balls): the warm-up of 5 collisions a ball ends
-    // near T = 13; A pressed before the step to T = 21 restarts the averages
-    // at T = 20, and they go on from there.
+    // The kinetic scene (200 balls): the warm-up of L / lambda = 36
+    // collisions of two balls a ball ends near T = 51; A pressed before the
+    // step to T = 61 restarts the averages at T = 60, and they go on from
+    // there.
     const gas::testing::Scratch scratch;
     const std::string csv = scratch.file("c.csv");
     const auto run = gas::testing::run_program({"data/kinetic.scene", "--mode", "none",
-                                                "--until", "30", "--csv", csv, "--keys",
-                                                std::string(20, '.') + "A"});
+                                                "--until", "70", "--csv", csv, "--keys",
+                                                std::string(60, '.') + "A"});
     REQUIRE(run.status == 0);
     std::vector<std::vector<std::string>> rows;
     for (const std::string& line : gas::testing::lines_of(gas::testing::read_file(csv)))
       rows.push_back(gas::testing::fields_of(line));
-    REQUIRE(rows.size() == 31);  // the header and T = 1 ... 30
+    REQUIRE(rows.size() == 71);  // the header and T = 1 ... 70
     const std::size_t since = static_cast<std::size_t>(
         std::find(rows[0].begin(), rows[0].end(), "averages_since") - rows[0].begin());
     REQUIRE(since < rows[0].size());
     CHECK(rows[1][since] == "nan");                    // T = 1: warming up
-    const double warmed = std::stod(rows[20][since]);  // T = 20
-    CHECK(warmed > 5);
-    CHECK(warmed < 20);
-    CHECK(rows[21][since] == "20");  // restarted before the step to T = 21
-    CHECK(rows[30][since] == "20");
+    CHECK(rows[50][since] == "nan");                   // T = 50: still
+    const double warmed = std::stod(rows[60][since]);  // T = 60
+    CHECK(warmed > 50);
+    CHECK(warmed < 60);
+    CHECK(rows[61][since] == "60");  // restarted before the step to T = 61
+    CHECK(rows[70][since] == "60");
   }
 
 }  // TEST_SUITE

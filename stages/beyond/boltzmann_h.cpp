@@ -62,9 +62,16 @@ double boltzmann_h_of_speeds(std::span<const double> speeds, std::size_t bins,
   return boltzmann_h(counts, beyond, bin_width, kT);
 }
 
+// [anchor: h-noise]
 double boltzmann_h_noise_floor(std::size_t bins, std::size_t balls) {
-  if (balls == 0) return unknown;
-  return static_cast<double>(bins) / (2 * static_cast<double>(balls));
+  if (balls == 0 || bins < 2) return unknown;
+  return static_cast<double>(bins - 1) / (2 * static_cast<double>(balls));
 }
+
+double boltzmann_h_noise_spread(std::size_t bins, std::size_t balls) {
+  if (balls == 0 || bins < 2) return unknown;
+  return std::sqrt(2 * static_cast<double>(bins - 1)) / (2 * static_cast<double>(balls));
+}
+// [/anchor: h-noise]
 
 }  // namespace gas

@@ -34,7 +34,7 @@
 // A finite gas never reaches 0: N speeds drawn from Maxwell-Boltzmann fill
 // the bins with multinomial noise, and 2 N H is then distributed like
 // chi-squared with (bins - 1) degrees of freedom, so H fluctuates about
-// (bins - 1) / (2 N) (`boltzmann_h_noise_floor`).
+// (bins - 1) / (2 N) (`boltzmann_h_noise_floor`, which says why).
 #pragma once
 
 #include <cstddef>
@@ -60,12 +60,17 @@ double boltzmann_h_of_speeds(std::span<const double> speeds, std::size_t bins,
                              double bin_width);
 
 // The H that N speeds drawn from Maxwell-Boltzmann show on average, from the
-// noise alone: (categories - 1) / (2 N), categories = bins + 1 (the bin
-// beyond counted). Its standard deviation is sqrt(2 (categories - 1)) / (2 N).
-// (Valid when every bin expects a few balls; bins that expect almost none
-// count for less. When kT is the sample's own mean v^2 / 2, as in
-// boltzmann_h_of_speeds, one degree of freedom is used up and the mean is
-// nearer (categories - 2) / (2 N): the floor errs high, the safe side.)
+// noise alone, when kT is their own mean v^2 / 2 (as in the gas, whose energy
+// is fixed, and in boltzmann_h_of_speeds). For many balls in every bin,
+// 2 N H = 2 N sum p ln(p / q) ~ sum N (p - q)^2 / q, Pearson's chi-squared
+// of the counts (the second-order term; the first, sum (p - q), is 0); its
+// degrees of freedom are the categories, bins + 1 with the one beyond, less
+// one for their sum N, less one for the energy, a second linear constraint
+// on the counts (sum of counts times each bin's v^2 = 2 N kT, to first order):
+// mean (bins - 1) / (2 N), standard deviation sqrt(2 (bins - 1)) / (2 N)
+// (`boltzmann_h_noise_spread`). Bins that expect only a few balls make it
+// rougher; for a handful of balls (fewer than a few per bin) it is no guide.
 double boltzmann_h_noise_floor(std::size_t bins, std::size_t balls);
+double boltzmann_h_noise_spread(std::size_t bins, std::size_t balls);
 
 }  // namespace gas

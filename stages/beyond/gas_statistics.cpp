@@ -9,6 +9,8 @@
 
 #include "beyond/boltzmann_h.hpp"
 #include "beyond/fluid_structure.hpp"
+#include "beyond/hard_disc_fluid.hpp"
+#include "beyond/kinetic_theory.hpp"
 
 namespace gas {
 namespace {
@@ -26,6 +28,21 @@ double speed_of(const Ball& ball) {
 
 }  // namespace
 
+// [anchor: warm-up]
+long long warm_up_collisions_a_ball(const Gas& gas) {
+  const auto n = static_cast<double>(gas.balls.size());
+  if (gas.balls.size() < 2) return 0;
+  // The mean free path of kinetic theory at N / (A1 A2): lambda = <v> / rate,
+  // Enskog's rate (beyond/kinetic_theory.hpp); kT drops out.
+  const double eta =
+      n * std::numbers::pi * gas.radius * gas.radius / (gas.width * gas.height);
+  const double path = enskog_mean_free_path(eta, gas.radius);
+  const double crossing = std::max(gas.width, gas.height) / path;  // L / lambda
+  if (!std::isfinite(crossing)) return fewest_warm_up_collisions;
+  return std::max(fewest_warm_up_collisions, static_cast<long long>(std::ceil(crossing)));
+}
+// [/anchor: warm-up]
+
 GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
   return {duration - earlier.duration,
           speed_time - earlier.speed_time,
@@ -35,7 +52,10 @@ GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
           virial - earlier.virial,
           interior_virial - earlier.interior_virial,
           interior_time - earlier.interior_time,
-          ball_collisions - earlier.ball_collisions};
+          interior_energy - earlier.interior_energy,
+          interior_speed - earlier.interior_speed,
+          ball_collisions - earlier.ball_collisions,
+          interior_collisions - earlier.interior_collisions};
 }
 
 GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up)
@@ -58,8 +78,9 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up)
   for (const Ball& ball : gas.balls) count_speed(ball, gas.time, +1);
   // A sample for the error bars every N collisions: about two a ball.
   collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_));
-  warm_up_until_ =
-      warm_up ? warm_up_collisions_per_ball * static_cast<long long>(balls_) : 0;
+  // The warm-up, in collisions of two balls: each counts for two balls.
+  warm_up_per_ball_ = warm_up ? warm_up_collisions_a_ball(gas) : 0;
+  warm_up_until_ = (warm_up_per_ball_ * static_cast<long long>(balls_) + 1) / 2;
   if (warm_up_until_ == 0) start_averages(gas);
 }
 
@@ -111,6 +132,17 @@ double GasStatistics::interior_time_of(const Ball& ball, double until) const {
 }
 // [/anchor: interior-time]
 
+// A flight's time inside the interior, and its v^2 and v times that time
+// (the speed is constant along a flight).
+void GasStatistics::add_interior_flight(Sums& s, const Ball& ball, double until) const {
+  const double inside = interior_time_of(ball, until);
+  if (inside == 0) return;
+  const double square = ball.vx * ball.vx + ball.vy * ball.vy;
+  s.interior_time += inside;
+  s.interior_energy += square * inside;
+  s.interior_speed += std::sqrt(square) * inside;
+}
+
 // [anchor: collision-sums]
 void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
   // The sums up to TC, with the speeds held until then.
@@ -133,10 +165,10 @@ void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::horizontal_wall && width_ > 0)
     sums_.push_y += 2 * std::abs(first.vy) / (2 * width_);
   // The flights that end here, and the speeds that change.
-  sums_.interior_time += interior_time_of(first, t);
+  add_interior_flight(sums_, first, t);
   if (c.kind == CollisionKind::balls) {
     const Ball& second = gas.balls[static_cast<std::size_t>(c.second - 1)];  // N2
-    sums_.interior_time += interior_time_of(second, t);
+    add_interior_flight(sums_, second, t);
     count_speed(first, t, -1);  // the old speeds leave the sums
     count_speed(second, t, -1);
     before_v_ = {first.vx, first.vy};
@@ -154,9 +186,12 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
     const double dx = p.x - q.x, dy = p.y - q.y;  // both written at TC
     const double virial = dx * (p.vx - before_v_[0]) + dy * (p.vy - before_v_[1]);
     sums_.virial += virial;
-    if (interior_.contains((p.x + q.x) / 2, (p.y + q.y) / 2))
+    if (interior_.contains((p.x + q.x) / 2, (p.y + q.y) / 2)) {
       sums_.interior_virial += virial;
+      ++sums_.interior_collisions;
+    }
     ++sums_.ball_collisions;
+    ++ball_collisions_;
   }
   // Every N collisions the sum of the speeds is added up afresh, so that the
   // round-off of taking out and putting in never accumulates.
@@ -165,7 +200,7 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
     for (const Ball& ball : gas.balls) speed_sum_ += speed_of(ball);
   }
   if (!averaging_) {
-    if (collisions_ >= warm_up_until_) start_averages(gas);
+    if (ball_collisions_ >= warm_up_until_) start_averages(gas);
     return;
   }
   // A sample for the error bars: each quantity over the last N collisions.
@@ -207,15 +242,14 @@ void GasStatistics::restart(const Gas& gas) {
 }
 
 void GasStatistics::before_rows_rewritten(const Gas& gas) {
-  for (const Ball& ball : gas.balls)
-    sums_.interior_time += interior_time_of(ball, gas.time);
+  for (const Ball& ball : gas.balls) add_interior_flight(sums_, ball, gas.time);
 }
 
 GasStatistics::Sums GasStatistics::sums_at(const Gas& gas, double now) const {
   Sums s = sums_;
   s.duration += now - last_time_;
   s.speed_time += speed_sum_ * (now - last_time_);
-  for (const Ball& ball : gas.balls) s.interior_time += interior_time_of(ball, now);
+  for (const Ball& ball : gas.balls) add_interior_flight(s, ball, now);
   return s;
 }
 
@@ -223,26 +257,47 @@ GasStatistics::Sums GasStatistics::sums_at(const Gas& gas, double now) const {
 double GasStatistics::value_of(Quantity q, const Sums& s) const {
   const double n = static_cast<double>(balls_), t = s.duration;
   const double pressure_x = s.push_x / t, pressure_y = s.push_y / t;
+  // The interior: its eta from the ball-time inside; its own kT from the
+  // balls' v^2 there (<v^2> = 2 kT); Z = P / (n kT) from its virial at that
+  // kT; the rate per ball from its collisions (both balls) per ball-time
+  // inside. (The interior's kT is the box's on average, but it wanders
+  // slowly, heat crossing the table, and its density with it: measured at
+  // its own kT the interior's Z follows its own eta, and the difference from
+  // the theory at eta_int loses that slow wandering; lesson 11.)
+  const double a2 = radius_ * radius_;
+  const double eta = s.interior_time / t / interior_.area() * std::numbers::pi * a2;
+  const double kT_inside = s.interior_energy / (2 * s.interior_time);
+  const double bulk_z = 1 + s.interior_virial / (2 * kT_inside * s.interior_time);
+  const double rate = 2 * static_cast<double>(s.interior_collisions) / s.interior_time;
   switch (q) {
     case mean_speed_q:
       return s.speed_time / (t * n);
-    case pressure_q:  // the two directions averaged
+    case pressure_box_q:  // the two directions averaged
       return (pressure_x + pressure_y) / 2;
-    case pressure_x_q:
+    case pressure_box_x_q:
       return pressure_x;
-    case pressure_y_q:
+    case pressure_box_y_q:
       return pressure_y;
     case box_z_walls_q:  // P A_c / (N kT), A_c = (A1 - 2a)(A2 - 2a)
       return (pressure_x + pressure_y) / 2 * width_ * height_ / (n * kT_);
     case box_z_virial_q:  // P A_c = N kT + (sum of d . dv) / (2 t), in 2D
       return 1 + s.virial / (2 * t * n * kT_);
     case bulk_z_q:  // the same for the interior, N_int t = its ball-time
-      return 1 + s.interior_virial / (2 * kT_ * s.interior_time);
+      return bulk_z;
+    case bulk_z_minus_theory_q:  // against the reference at this stretch's eta
+      return bulk_z - hard_disc_fluid_compressibility(eta);
     case interior_eta_q:  // n_int pi a^2
-      return s.interior_time / t / interior_.area() * std::numbers::pi * radius_ *
-             radius_;
-    case collision_rate_q:
+      return eta;
+    case interior_kT_q:
+      return kT_inside;
+    case collision_rate_box_q:
       return 2 * static_cast<double>(s.ball_collisions) / (n * t);
+    case collision_rate_q:
+      return rate;
+    case collision_rate_minus_theory_q:
+      return rate - enskog_collision_rate(eta, radius_, kT_inside);
+    case mean_free_path_q:  // the interior's mean speed over its rate
+      return s.interior_speed / s.interior_time / rate;
     case wall_middle_pressure_q:
       return s.push_x_middle / t;
     case quantity_count:
@@ -258,22 +313,32 @@ Average& GasStatistics::average_of(MeasuredFigures& m, Quantity q) {
   switch (q) {
     case mean_speed_q:
       return m.mean_speed;
-    case pressure_q:
-      return m.pressure;
-    case pressure_x_q:
-      return m.pressure_x;
-    case pressure_y_q:
-      return m.pressure_y;
+    case pressure_box_q:
+      return m.pressure_box;
+    case pressure_box_x_q:
+      return m.pressure_box_x;
+    case pressure_box_y_q:
+      return m.pressure_box_y;
     case box_z_walls_q:
       return m.box_z_walls;
     case box_z_virial_q:
       return m.box_z_virial;
     case bulk_z_q:
       return m.bulk_z;
+    case bulk_z_minus_theory_q:
+      return m.bulk_z_minus_theory;
     case interior_eta_q:
       return m.interior_area_fraction;
+    case interior_kT_q:
+      return m.interior_kT;
+    case collision_rate_box_q:
+      return m.collision_rate_box;
     case collision_rate_q:
       return m.collision_rate;
+    case collision_rate_minus_theory_q:
+      return m.collision_rate_minus_theory;
+    case mean_free_path_q:
+      return m.mean_free_path;
     case wall_middle_pressure_q:
       return m.wall_middle_pressure;
     case quantity_count:
@@ -290,6 +355,7 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   m.speed_fractions.assign(static_cast<std::size_t>(bins()), 0.0);
   m.bin_width = bin_width_;
   m.warming_up = !averaging_;
+  m.warm_up_collisions = warm_up_per_ball_;
   if (!averaging_) return m;
   const double now = gas.time;
   const Sums s = sums_at(gas, now);

@@ -41,30 +41,48 @@ struct Average {
   double error = not_known;
 };
 
-// How many collisions of the start are left out of the averages, per ball:
-// a gas started on a lattice at one speed has relaxed after a few (lesson 11).
-inline constexpr long long warm_up_collisions_per_ball = 5;
+// The warm-up: how many collisions of two balls, per ball, are left out of
+// the averages (each such collision counts for both its balls). A start on a
+// lattice or at random places has no layers at the walls yet; as they form,
+// the interior's density settles, and that takes about as long as a ball at
+// the mean speed needs to cross the table (one to three passes of sound, from
+// eta = 0.1 to 0.5): in collisions a ball, the table's longer side over the
+// mean free path of kinetic theory at N / (A1 A2), L / lambda, and never fewer
+// than fewest_warm_up_collisions (the speeds' own relaxation; lesson 11). No
+// warm-up for one ball: nothing relaxes.
+inline constexpr long long fewest_warm_up_collisions = 10;
+long long warm_up_collisions_a_ball(const Gas& gas);
 // The interior: centres at least this many radii from every wall. Density
 // oscillations at a wall die out within a few diameters (lesson 11).
 inline constexpr double interior_margin_radii = 8;
 
 // The figures measured since the averages started, as of one moment.
 struct MeasuredFigures {
-  bool warming_up = true;          // the first collisions, left out
-  double since = not_known;        // T at which the averages started
-  double duration = 0;             // the time averaged over
-  Average mean_speed;              // of the balls, over time
-  Average pressure;                // on the walls: their push per time per length
-  Average pressure_x;              // on the walls x = 0 and x = A1 alone
-  Average pressure_y;              // on the walls y = 0 and y = A2 alone
-  Average box_z_walls;             // Z of the box: P A_c / (N kT), from the walls
-  Average box_z_virial;            // the same from the collision virial
-  Average bulk_z;                  // Z of the interior: P_int / (n_int kT)
+  bool warming_up = true;            // the first collisions, left out
+  long long warm_up_collisions = 0;  // of two balls, per ball, left out
+  double since = not_known;          // T at which the averages started
+  double duration = 0;               // the time averaged over
+  Average mean_speed;                // of the balls, over time
+  Average pressure_box;    // on the whole walls: push per unit time per unit length
+  Average pressure_box_x;  // on the walls x = 0 and x = A1 alone
+  Average pressure_box_y;  // on the walls y = 0 and y = A2 alone
+  Average box_z_walls;     // Z of the box: P A_c / (N kT), from the walls
+  Average box_z_virial;    // the same from the collision virial
+  Average bulk_z;          // Z of the interior: P_int / (n_int kT)
+  Average
+      bulk_z_minus_theory;  // Z - Z_ref(eta_int), sample by sample: its error combined
   Average interior_area_fraction;  // eta_int = n_int pi a^2, n_int over time
-  Average collision_rate;          // per ball: 2 (collisions of two balls) / (N t)
-  Average pair_contact;            // g(2a+) among the balls of the interior
-  Average wall_contact_pressure;   // kT n(contact) at the walls x = 0, A1 (their middles)
-  Average wall_middle_pressure;    // the push on those middles: P there
+  Average interior_kT;             // the interior's own kT: <v^2> / 2 of its balls
+  Average
+      collision_rate_box;  // per ball per unit time: 2 (collisions of two balls) / (N t)
+  Average
+      collision_rate;  // the same in the interior: 2 (its collisions) / (its ball-time)
+  Average collision_rate_minus_theory;  // the interior's rate - Enskog's at eta_int,
+                                        // sample by sample
+  Average mean_free_path;               // the interior's mean speed / its rate (a length)
+  Average pair_contact;                 // g(2a+) among the balls of the interior
+  Average wall_contact_pressure;  // kT n(contact) at the walls x = 0, A1 (their middles)
+  Average wall_middle_pressure;   // the push on those middles: P there
   std::vector<double> speed_fractions;  // the histogram: ball-time fractions per bin
   double bin_width = 0;                 // of its bins
   double fraction_beyond = 0;           // faster than its last bin
@@ -75,8 +93,8 @@ class GasStatistics final : public CollisionObserver {
  public:
   // Speeds are counted in `bins` equal bins from 0 to 2.5 v_rms (v_rms of the
   // gas as it is now; the energy does not change); faster ones apart. The
-  // averages start after warm_up_collisions_per_ball * N collisions of any
-  // kind from now (`warm_up` false: at once).
+  // averages start after warm_up_collisions_a_ball(gas) collisions of two
+  // balls per ball from now (`warm_up` false: at once).
   GasStatistics(const Gas& gas, int bins, bool warm_up = true);
 
   // Stage 7's hook: before a collision the sums are brought up to TC and the
@@ -97,6 +115,7 @@ class GasStatistics final : public CollisionObserver {
   MeasuredFigures measured(const Gas& gas) const;
 
   int bins() const { return static_cast<int>(bin_count_.size()) - 1; }
+  std::size_t balls() const { return balls_; }
   double bin_width() const { return bin_width_; }
 
  private:
@@ -110,20 +129,29 @@ class GasStatistics final : public CollisionObserver {
     double virial = 0;           // d . dv over K = 3 (d = r1 - r2 at contact)
     double interior_virial = 0;  // the same, for contacts inside the interior
     double interior_time = 0;    // ball-time spent inside the interior
+    double interior_energy = 0;  // integral over that time of v^2 (2 kT per ball)
+    double interior_speed = 0;   // and of v
     long long ball_collisions = 0;
+    long long interior_collisions =
+        0;  // of two balls, their midpoint inside the interior
     Sums minus(const Sums& earlier) const;
   };
   // The quantities averaged, each a function of a stretch's sums.
   enum Quantity {
     mean_speed_q,
-    pressure_q,
-    pressure_x_q,
-    pressure_y_q,
+    pressure_box_q,
+    pressure_box_x_q,
+    pressure_box_y_q,
     box_z_walls_q,
     box_z_virial_q,
     bulk_z_q,
+    bulk_z_minus_theory_q,
     interior_eta_q,
+    interior_kT_q,
+    collision_rate_box_q,
     collision_rate_q,
+    collision_rate_minus_theory_q,
+    mean_free_path_q,
     wall_middle_pressure_q,
     quantity_count
   };
@@ -138,6 +166,8 @@ class GasStatistics final : public CollisionObserver {
   // A ball's speed leaves the sums (change -1) or comes in (+1) at `time`.
   void count_speed(const Ball& ball, double time, int change);
   double interior_time_of(const Ball& ball, double until) const;  // of its flight
+  // Its flight's time inside, and v^2 and v times it, into the sums `s`.
+  void add_interior_flight(Sums& s, const Ball& ball, double until) const;
 
   std::size_t balls_ = 0;
   double kT_ = 0;
@@ -148,8 +178,10 @@ class GasStatistics final : public CollisionObserver {
   long long collisions_per_sample_ = 1;
 
   // The state as of the last collision.
-  long long collisions_ = 0;     // since this object was made
-  long long warm_up_until_ = 0;  // the collision after which averages start
+  long long collisions_ = 0;        // since this object was made
+  long long ball_collisions_ = 0;   // of two balls, since this object was made
+  long long warm_up_per_ball_ = 0;  // collisions of two balls a ball, left out
+  long long warm_up_until_ = 0;  // the collision of two balls after which averages start
   bool averaging_ = false;
   double start_ = 0;                  // T when the averages started
   double last_time_ = 0;              // the last collision's TC

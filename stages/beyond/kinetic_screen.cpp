@@ -8,10 +8,12 @@
 #include <iterator>
 #include <numbers>
 
+#include "beyond/boltzmann_h.hpp"
 #include "beyond/hard_disc_fluid.hpp"
 
 namespace gas {
 
+// [anchor: kinetic-figures]
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) {
   KineticFigures k;
   const auto n = static_cast<double>(gas.balls.size());
@@ -19,18 +21,42 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) 
   k.theory = kinetic_theory(gas);
   k.measured = statistics.measured(gas);
   const MeasuredFigures& m = k.measured;
-  // The bulk: the reference at the interior's own density (like with like).
+  // H's noise: 2 N H of N Maxwellian speeds in B bins and one beyond is
+  // chi-squared with B - 1 degrees of freedom (B + 1 categories, less one
+  // for their sum N and one for the energy, fixed): mean (B - 1) / 2N.
+  k.h_noise = boltzmann_h_noise_floor(static_cast<std::size_t>(statistics.bins()),
+                                      gas.balls.size());
+  k.h_noise_spread = boltzmann_h_noise_spread(static_cast<std::size_t>(statistics.bins()),
+                                              gas.balls.size());
+  // The bulk: the reference at the interior's own density (like with like),
+  // for many balls only; each theory's error is its slope in eta times
+  // eta_int's error.
+  k.many_balls = gas.balls.size() >= kinetic_theory_fewest_balls;
+  if (!k.many_balls) return k;
   const double eta = m.interior_area_fraction.value;
-  k.bulk_z_theory = hard_disc_fluid_compressibility(eta);
+  const double eta_error = m.interior_area_fraction.error;
+  // kT: the interior's own (the box's on average; lesson 11).
+  const double kT = m.interior_kT.value, a = gas.radius, pi = std::numbers::pi;
+  const double z = hard_disc_fluid_compressibility(eta);
+  const double slope = hard_disc_fluid_compressibility_slope(eta);  // dZ / d eta
+  k.bulk_z_theory = {z, std::abs(slope) * eta_error};
   k.bulk_z_henderson = henderson_compressibility(eta);
   k.pair_contact_theory = hard_disc_fluid_contact_value(eta);
-  const double interior_density = eta / (std::numbers::pi * gas.radius * gas.radius);
-  k.pressure_theory = k.bulk_z_theory * interior_density * k.theory.kT;
-  k.mean_free_path = m.collision_rate.value > 0
-                         ? m.mean_speed.value / m.collision_rate.value
-                         : not_known;
+  // P = Z n kT, n = eta / (pi a^2): dP / d eta = (Z + eta Z') kT / (pi a^2).
+  k.pressure_theory = {z * eta * kT / (pi * a * a),
+                       std::abs(z + eta * slope) * kT / (pi * a * a) * eta_error};
+  // Enskog: rate = 2 (2a) n g sqrt(pi kT) with n g = (Z - 1) / (2 eta) n
+  // = (Z - 1) / (2 pi a^2), so d rate / d eta = Z' 2 sqrt(pi kT) / (pi a);
+  // the free path lambda = sqrt(pi kT / 2) / rate moves the other way.
+  const double rate = enskog_collision_rate(eta, a, kT);
+  const double rate_error =
+      std::abs(slope) * 2 * std::sqrt(pi * kT) / (pi * a) * eta_error;
+  k.collision_rate_theory = {rate, rate_error};
+  const double path = enskog_mean_free_path(eta, a);
+  k.mean_free_path_theory = {path, path * rate_error / rate};
   return k;
 }
+// [/anchor: kinetic-figures]
 
 namespace {
 
@@ -46,6 +72,9 @@ std::string shown(const Average& average) {
   if (std::isnan(average.error)) return shown(average.value);
   return fmt::format("{:.5g} +- {:.2g}", average.value, average.error).substr(0, 21);
 }
+
+// Where the theory of the bulk does not apply to so few balls.
+constexpr const char* few_balls = "needs many balls";
 
 }  // namespace
 
@@ -113,13 +142,21 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
 void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k) {
   const KineticTheory& t = k.theory;
   const MeasuredFigures& m = k.measured;
-  // Each measured figure beside the theory's: now, its average with its
-  // error, and the prediction.
-  auto row = [](const char* label, const std::string& now, const std::string& average,
-                double theory, const std::string& source) {
-    return fmt::format("{:<16}{:<10}{:<22}{:<11}{}", label, now, average, shown(theory),
-                       source);
+  // Each measured figure, its average since the averages started with its
+  // error, beside the theory of the same thing with the theory's error, and
+  // which theory. The bulk's theories only for many balls.
+  auto row = [](const char* label, const Average& average, const std::string& theory,
+                const std::string& source) {
+    return fmt::format("{:<18}{:<22}{:<21}{}", label, shown(average), theory, source);
   };
+  auto bulk = [&](const char* label, const Average& average, const Average& theory,
+                  const std::string& source) {
+    return k.many_balls ? row(label, average, shown(theory), source)
+                        : row(label, average, few_balls, "");
+  };
+  // Z - Z_theory with its error, combined sample by sample (gas_statistics).
+  const std::string z_difference =
+      k.many_balls ? fmt::format("Z - reference {}", shown(m.bulk_z_minus_theory)) : "";
   const std::vector<std::string> lines = {
       fmt::format("T {:.6f}  T0 {:g}  collisions {} (walls {}, balls {})", f.time,
                   f.display_step, f.wall_collisions + f.ball_collisions,
@@ -127,30 +164,46 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       fmt::format("N {}  eta {:.4f}  kT {:.5g}  drift {:+.1e}  momentum ({:.2g}, {:.2g})",
                   f.balls, t.area_fraction, t.kT, f.energy_drift, f.momentum.x,
                   f.momentum.y),
+      "units: a, mass 1, kT = E/N; P per unit length, rates per unit time",
+      fmt::format("speeds now: mean {}, rms {} (fixed by E)", shown(f.mean_speed),
+                  shown(k.rms_speed)),
+      k.many_balls
+          ? fmt::format("H {:.4f}  its noise for {} balls in {} bins: {:.2g} +- {:.2g}",
+                        m.h_now, f.balls, m.speed_fractions.size(), k.h_noise,
+                        k.h_noise_spread)
+          : fmt::format("H {:.4f}  (of {} speeds in {} bins: mostly noise)", m.h_now,
+                        f.balls, m.speed_fractions.size()),
       m.warming_up
-          ? fmt::format("H {:.4f}  warming up: averages start after {} "
-                        "collisions a ball",
-                        m.h_now, warm_up_collisions_per_ball)
-          : fmt::format("H {:.4f}  averages over T {:.6g} ... {:.6g} (A restarts)",
-                        m.h_now, m.since, m.since + m.duration),
-      fmt::format("{:<16}{:<10}{:<22}{}", "", "now", "average +- error", "theory"),
-      row("mean speed", shown(f.mean_speed), shown(m.mean_speed), t.mean_speed,
-          "Maxwell"),
-      row("rms speed", shown(k.rms_speed), "", t.rms_speed, "(E fixed)"),
-      row("pressure", "", shown(m.pressure), k.pressure_theory, "bulk, reference"),
-      fmt::format("{:<26}{:<22}{}", "  Px, Py (equal)", shown(m.pressure_x),
-                  shown(m.pressure_y)),
-      fmt::format("{:<26}{:<22}{}", "Z box: walls, virial", shown(m.box_z_walls),
+          ? fmt::format(
+                "warming up: averages start after {} collisions of two balls a ball",
+                m.warm_up_collisions)
+          : fmt::format("averages over T {:.6g} ... {:.6g} (A restarts)", m.since,
+                        m.since + m.duration),
+      fmt::format("{:<18}{:<22}{:<21}{}", "", "average +- error", "theory +- error",
+                  "(theory)"),
+      row("mean speed", m.mean_speed, shown(t.mean_speed), "E fixed"),
+      bulk("P walls' middles", m.wall_middle_pressure, k.pressure_theory,
+           "bulk, reference"),
+      fmt::format("{:<18}{:<22}{:<21}{}", "P whole walls", shown(m.pressure_box),
+                  "(box, corners too)", ""),
+      fmt::format("{:<18}{:<22}{}", "  Px, Py (box)", shown(m.pressure_box_x),
+                  shown(m.pressure_box_y)),
+      fmt::format("{:<18}{:<22}{}", "Z box: walls, vir", shown(m.box_z_walls),
                   shown(m.box_z_virial)),
-      row("Z bulk", "", shown(m.bulk_z), k.bulk_z_theory,
-          fmt::format("Henderson {}", shown(k.bulk_z_henderson))),
-      row("  eta inside", "", shown(m.interior_area_fraction), t.area_fraction, "N/A"),
-      row("  g(2a) inside", "", shown(m.pair_contact), k.pair_contact_theory,
-          "reference"),
-      row("kT n at walls", "", shown(m.wall_contact_pressure),
-          m.wall_middle_pressure.value, "P there"),
-      row("collision rate", "", shown(m.collision_rate), t.collision_rate, "Enskog"),
-      row("mean free path", "", shown(k.mean_free_path), t.mean_free_path, "Enskog"),
+      bulk("Z bulk", m.bulk_z, k.bulk_z_theory,
+           fmt::format("Henderson {}", shown(k.bulk_z_henderson))),
+      fmt::format("{:<18}{:<22}{}", "  eta inside", shown(m.interior_area_fraction),
+                  z_difference),
+      row("  g(2a) inside", m.pair_contact,
+          k.many_balls ? shown(k.pair_contact_theory) : few_balls, "reference"),
+      row("kT n at walls", m.wall_contact_pressure, shown(m.wall_middle_pressure.value),
+          "P there"),
+      bulk("collisions/ball", m.collision_rate, k.collision_rate_theory,
+           "Enskog (inside)"),
+      fmt::format("{:<18}{:<22}{}", "  whole box", shown(m.collision_rate_box),
+                  "(box: walls too)"),
+      bulk("mean free path", m.mean_free_path, k.mean_free_path_theory,
+           "Enskog (inside)"),
   };
   draw_figures(screen, lines);  // stage 6: the lines at their places
   // Below them, after a blank row, the histogram, if there is room for it.
@@ -159,57 +212,143 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
 }
 // [/anchor: draw-kinetic-figures]
 
+// [anchor: csv-columns]
+namespace {
+
+// One column of --csv: its name and how its value is read from the figures.
+struct Column {
+  const char* name;
+  double (*value)(const Figures& f, const KineticFigures& k);
+};
+
+// Readers for the columns: an average measured (its value or its error), a
+// theory with its error, a plain figure of kinetic theory.
+template <Average MeasuredFigures::*average>
+double measured_value(const Figures&, const KineticFigures& k) {
+  return (k.measured.*average).value;
+}
+template <Average MeasuredFigures::*average>
+double measured_error(const Figures&, const KineticFigures& k) {
+  return (k.measured.*average).error;
+}
+template <Average KineticFigures::*theory>
+double theory_value(const Figures&, const KineticFigures& k) {
+  return (k.*theory).value;
+}
+template <Average KineticFigures::*theory>
+double theory_error(const Figures&, const KineticFigures& k) {
+  return (k.*theory).error;
+}
+// A difference from the theory: only where the theory applies (many balls).
+template <Average MeasuredFigures::*average>
+double deviation_value(const Figures&, const KineticFigures& k) {
+  return k.many_balls ? (k.measured.*average).value : not_known;
+}
+template <Average MeasuredFigures::*average>
+double deviation_error(const Figures&, const KineticFigures& k) {
+  return k.many_balls ? (k.measured.*average).error : not_known;
+}
+template <double KineticFigures::*figure>
+double kinetic_value(const Figures&, const KineticFigures& k) {
+  return k.*figure;
+}
+
+using M = MeasuredFigures;
+using K = KineticFigures;
+
+// The columns in order: the article's figures, then kinetic theory's (the
+// naming convention in data/README.md). A block of columns is appended at
+// the end.
+constexpr Column columns[] = {
+    {"T", [](const Figures& f, const KineticFigures&) { return f.time; }},
+    {"T0", [](const Figures& f, const KineticFigures&) { return f.display_step; }},
+    {"wall_collisions",
+     [](const Figures& f, const KineticFigures&) {
+       return static_cast<double>(f.wall_collisions);
+     }},
+    {"ball_collisions",
+     [](const Figures& f, const KineticFigures&) {
+       return static_cast<double>(f.ball_collisions);
+     }},
+    {"mean_speed", [](const Figures& f, const KineticFigures&) { return f.mean_speed; }},
+    {"energy", [](const Figures& f, const KineticFigures&) { return f.energy; }},
+    {"energy_drift",
+     [](const Figures& f, const KineticFigures&) { return f.energy_drift; }},
+    {"px", [](const Figures& f, const KineticFigures&) { return f.momentum.x; }},
+    {"py", [](const Figures& f, const KineticFigures&) { return f.momentum.y; }},
+    {"kT", [](const Figures&, const KineticFigures& k) { return k.theory.kT; }},
+    {"averages_since",
+     [](const Figures&, const KineticFigures& k) { return k.measured.since; }},
+    {"H", [](const Figures&, const KineticFigures& k) { return k.measured.h_now; }},
+    {"H_noise", kinetic_value<&K::h_noise>},
+    {"H_noise_spread", kinetic_value<&K::h_noise_spread>},
+    {"mean_speed_average", measured_value<&M::mean_speed>},
+    {"mean_speed_average_error", measured_error<&M::mean_speed>},
+    {"mean_speed_average_theory",
+     [](const Figures&, const KineticFigures& k) { return k.theory.mean_speed; }},
+    {"pressure", measured_value<&M::wall_middle_pressure>},
+    {"pressure_error", measured_error<&M::wall_middle_pressure>},
+    {"pressure_theory", theory_value<&K::pressure_theory>},
+    {"pressure_theory_error", theory_error<&K::pressure_theory>},
+    {"pressure_box", measured_value<&M::pressure_box>},
+    {"pressure_box_error", measured_error<&M::pressure_box>},
+    {"pressure_box_x", measured_value<&M::pressure_box_x>},
+    {"pressure_box_x_error", measured_error<&M::pressure_box_x>},
+    {"pressure_box_y", measured_value<&M::pressure_box_y>},
+    {"pressure_box_y_error", measured_error<&M::pressure_box_y>},
+    {"Z", measured_value<&M::bulk_z>},
+    {"Z_error", measured_error<&M::bulk_z>},
+    {"Z_theory", theory_value<&K::bulk_z_theory>},
+    {"Z_theory_error", theory_error<&K::bulk_z_theory>},
+    {"Z_deviation", deviation_value<&M::bulk_z_minus_theory>},
+    {"Z_deviation_error", deviation_error<&M::bulk_z_minus_theory>},
+    {"Z_henderson", kinetic_value<&K::bulk_z_henderson>},
+    {"eta_interior", measured_value<&M::interior_area_fraction>},
+    {"eta_interior_error", measured_error<&M::interior_area_fraction>},
+    {"kT_interior", measured_value<&M::interior_kT>},
+    {"kT_interior_error", measured_error<&M::interior_kT>},
+    {"Z_box_walls", measured_value<&M::box_z_walls>},
+    {"Z_box_walls_error", measured_error<&M::box_z_walls>},
+    {"Z_box_virial", measured_value<&M::box_z_virial>},
+    {"Z_box_virial_error", measured_error<&M::box_z_virial>},
+    {"collision_rate", measured_value<&M::collision_rate>},
+    {"collision_rate_error", measured_error<&M::collision_rate>},
+    {"collision_rate_theory", theory_value<&K::collision_rate_theory>},
+    {"collision_rate_theory_error", theory_error<&K::collision_rate_theory>},
+    {"collision_rate_deviation", deviation_value<&M::collision_rate_minus_theory>},
+    {"collision_rate_deviation_error", deviation_error<&M::collision_rate_minus_theory>},
+    {"collision_rate_box", measured_value<&M::collision_rate_box>},
+    {"collision_rate_box_error", measured_error<&M::collision_rate_box>},
+    {"mean_free_path", measured_value<&M::mean_free_path>},
+    {"mean_free_path_error", measured_error<&M::mean_free_path>},
+    {"mean_free_path_theory", theory_value<&K::mean_free_path_theory>},
+    {"mean_free_path_theory_error", theory_error<&K::mean_free_path_theory>},
+    {"g_contact", measured_value<&M::pair_contact>},
+    {"g_contact_error", measured_error<&M::pair_contact>},
+    {"g_contact_theory", kinetic_value<&K::pair_contact_theory>},
+    {"wall_contact_pressure", measured_value<&M::wall_contact_pressure>},
+    {"wall_contact_pressure_error", measured_error<&M::wall_contact_pressure>},
+};
+
+}  // namespace
+
 std::string csv_header() {
-  return "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"
-         "kT,mean_speed_average,mean_speed_error,mean_speed_theory,"
-         "pressure,pressure_error,pressure_theory,pressure_x,pressure_x_error,"
-         "pressure_y,pressure_y_error,"
-         "Z,Z_error,Z_theory,Z_henderson,eta_interior,eta_interior_error,"
-         "Z_box_walls,Z_box_walls_error,Z_box_virial,Z_box_virial_error,"
-         "collision_rate,collision_rate_error,collision_rate_theory,"
-         "mean_free_path,mean_free_path_theory,H,averages_since,"
-         "g_contact,g_contact_error,g_contact_theory,"
-         "wall_contact_pressure,wall_contact_pressure_error,"
-         "wall_middle_pressure,wall_middle_pressure_error";
+  std::string header;
+  for (const Column& column : columns) {
+    if (!header.empty()) header += ',';
+    header += column.name;
+  }
+  return header;
 }
 
 std::string csv_row(const Figures& f, const KineticFigures& k) {
-  const KineticTheory& t = k.theory;
-  const MeasuredFigures& m = k.measured;
   fmt::memory_buffer row;
-  auto add = [&row](double x) { fmt::format_to(std::back_inserter(row), ",{:.17g}", x); };
-  auto add_average = [&add](const Average& a) {
-    add(a.value);
-    add(a.error);
-  };
-  fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{},{}", f.time, f.display_step,
-                 f.wall_collisions, f.ball_collisions);
-  for (const double x :
-       {f.mean_speed, f.energy, f.energy_drift, f.momentum.x, f.momentum.y, t.kT})
-    add(x);
-  add_average(m.mean_speed);
-  add(t.mean_speed);
-  add_average(m.pressure);
-  add(k.pressure_theory);
-  add_average(m.pressure_x);
-  add_average(m.pressure_y);
-  add_average(m.bulk_z);
-  add(k.bulk_z_theory);
-  add(k.bulk_z_henderson);
-  add_average(m.interior_area_fraction);
-  add_average(m.box_z_walls);
-  add_average(m.box_z_virial);
-  add_average(m.collision_rate);
-  add(t.collision_rate);
-  add(k.mean_free_path);
-  add(t.mean_free_path);
-  add(m.h_now);
-  add(m.since);
-  add_average(m.pair_contact);
-  add(k.pair_contact_theory);
-  add_average(m.wall_contact_pressure);
-  add_average(m.wall_middle_pressure);
+  for (const Column& column : columns) {
+    if (row.size() > 0) row.push_back(',');
+    fmt::format_to(std::back_inserter(row), "{:.17g}", column.value(f, k));
+  }
   return fmt::to_string(row);
 }
+// [/anchor: csv-columns]
 
 }  // namespace gas

@@ -26,19 +26,24 @@ namespace gas {
 
 // Kinetic theory's figures: what it predicts, and the averages measured
 // since they started to set beside it, like with like: the box's own Z from
-// its walls and from its collisions, and the bulk's Z, from the interior,
-// against the reference at the interior's density.
+// its walls and from its collisions; the bulk's Z, pressure, collision rate
+// and mean free path, from the interior, against the reference and Enskog
+// at the interior's density eta_int, each theory with the uncertainty that
+// eta_int's error gives it.
 struct KineticFigures {
   double rms_speed = 0;      // sqrt(2 E / N), now
   KineticTheory theory;      // the predictions for this gas, at eta = N pi a^2 / A
   MeasuredFigures measured;  // the averages, the histogram, H
-  double bulk_z_theory = not_known;     // the reference Z at the interior's eta
-  double bulk_z_henderson = not_known;  // Henderson's at the same eta
-  double pressure_theory = not_known;   // the reference Z n_int kT: the bulk's pressure
+  bool many_balls = false;  // N >= kinetic_theory_fewest_balls: the bulk's theory applies
+  Average bulk_z_theory;    // the reference Z at eta_int
+  double bulk_z_henderson = not_known;     // Henderson's at the same eta
+  Average pressure_theory;                 // Z_ref n_int kT: the bulk's pressure
   double pair_contact_theory = not_known;  // the reference g(2a) at the interior's eta
-  double mean_free_path = not_known;       // average mean speed / collision rate
+  Average collision_rate_theory;           // Enskog's at eta_int, per ball per unit time
+  Average mean_free_path_theory;           // Enskog's at eta_int
+  double h_noise = not_known;         // the mean H of N Maxwellian speeds in the bins
+  double h_noise_spread = not_known;  // its standard deviation
 };
-
 // The predictions for `gas` and what `statistics` measured, at the gas's T.
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics);
 
@@ -53,7 +58,11 @@ void draw_histogram(TextScreen& screen, const KineticFigures& kinetic, int first
                     int last_row);
 
 // The CSV header and one row of figures (--csv): the article's nine columns,
-// then kinetic theory's.
+// then kinetic theory's, each named once in a table of columns
+// (kinetic_screen.cpp; the convention in data/README.md: a bulk figure
+// plain, the whole box's `_box`, `_error` its error, `_theory` the theory of
+// the same thing, `_theory_error` the theory's own). A new block of columns
+// is a new stretch of rows at the table's end.
 std::string csv_header();
 std::string csv_row(const Figures& figures, const KineticFigures& kinetic);
 

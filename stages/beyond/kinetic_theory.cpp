@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "beyond/hard_disc_fluid.hpp"
@@ -22,6 +23,27 @@ double maxwell_fraction_below(double speed, double kT) {
   return -std::expm1(-speed * speed / (2 * kT));
 }
 
+// [anchor: fixed-energy]
+// N balls of unit mass in a box, total kinetic energy E fixed (the walls do
+// not keep the momentum, so nothing else is): the 2N velocity components lie
+// on the sphere sum v_i^2 = 2E in 2N dimensions, and in equilibrium every
+// point of it is as likely (the microcanonical measure; the positions do not
+// depend on the velocities for hard discs). k coordinates of a point
+// uniform on the sphere of radius R in d dimensions have the density
+// (1 - |u|^2 / R^2)^((d - k) / 2 - 1) (the surface measure of the sphere cut
+// at u); one ball's velocity u is k = 2 of the d = 2N coordinates, so its
+// density is (1 - u^2 / R^2)^(N - 2), R^2 = 2E, and with s = v^2 / R^2 its speed
+// has density (N - 1) (1 - s)^(N - 2) in s. So <v> = R <sqrt s> = R (N - 1)
+// B(3/2, N - 1) = R Gamma(3/2) Gamma(N) / Gamma(N + 1/2). N = 1: <v> = R.
+double fixed_energy_mean_speed(std::size_t balls, double kT) {
+  if (balls == 0) return std::numeric_limits<double>::quiet_NaN();
+  const auto n = static_cast<double>(balls);
+  const double radius = std::sqrt(2 * n * kT);  // R = sqrt(2E)
+  return radius * std::sqrt(std::numbers::pi) / 2 *
+         std::exp(std::lgamma(n) - std::lgamma(n + 0.5));
+}
+// [/anchor: fixed-energy]
+
 // D. Henderson, "A simple equation of state for hard discs", Molecular
 // Physics 30, 971 (1975): Z = P A / (N kT) = (1 + eta^2 / 8) / (1 - eta)^2.
 // Against the reference (beyond/hard_disc_fluid.hpp) it is within 0.03 % up
@@ -39,29 +61,41 @@ double henderson_contact_value(double eta) {
 }
 // [/anchor: kinetic-formulas]
 
+// [anchor: enskog]
+// Enskog's collision rate per ball in 2D: a ball meets the others at contact
+// distance s = 2a across a "cross-section" of length 2s, at the mean relative
+// speed sqrt(pi kT) (that of two Maxwellian velocities), and the density at
+// contact is g(s) times the mean: rate = 2 s n g(s) sqrt(pi kT). (Chapman
+// and Cowling's dilute rate with Enskog's factor g; in 2D, e.g. Gass,
+// J. Chem. Phys. 54, 1898 (1971).)
+double enskog_collision_rate(double eta, double radius, double kT) {
+  const double density = eta / (std::numbers::pi * radius * radius);
+  return 2 * (2 * radius) * density * hard_disc_fluid_contact_value(eta) *
+         std::sqrt(std::numbers::pi * kT);
+}
+
+// Maxwell's mean speed over it: sqrt(pi kT / 2) / rate = 1 / (2 sqrt 2 s n g).
+double enskog_mean_free_path(double eta, double radius) {
+  const double density = eta / (std::numbers::pi * radius * radius);
+  return 1 / (2 * std::numbers::sqrt2 * (2 * radius) * density *
+              hard_disc_fluid_contact_value(eta));
+}
+// [/anchor: enskog]
+
 KineticTheory kinetic_theory(const Gas& gas) {
   KineticTheory t;
   const auto n_balls = static_cast<double>(gas.balls.size());
   if (gas.balls.empty()) return t;
   const double pi = std::numbers::pi;
-  const double diameter = 2 * gas.radius;
   t.kT = kinetic_energy(gas) / n_balls;
-  t.mean_speed = std::sqrt(pi * t.kT / 2);
+  t.mean_speed = fixed_energy_mean_speed(gas.balls.size(), t.kT);
+  t.maxwell_mean_speed = std::sqrt(pi * t.kT / 2);
   t.rms_speed = std::sqrt(2 * t.kT);
   const double table = gas.width * gas.height;
   t.area_fraction = n_balls * pi * gas.radius * gas.radius / table;
   t.compressibility = hard_disc_fluid_compressibility(t.area_fraction);
   t.contact_value = hard_disc_fluid_contact_value(t.area_fraction);
   t.henderson = henderson_compressibility(t.area_fraction);
-  // Enskog's collision rate per ball in 2D: a ball meets the others at
-  // contact distance s = 2a across a "cross-section" of length 2s, at the
-  // mean relative speed sqrt(pi kT) (that of two Maxwellian velocities), and
-  // the density at contact is g(s) times the mean: rate = 2 s n g(s)
-  // sqrt(pi kT), n = N / (A1 A2). (Chapman and Cowling's dilute rate with
-  // Enskog's factor g; in 2D, e.g. Gass, J. Chem. Phys. 54, 1898 (1971).)
-  const double density = n_balls / table;
-  t.collision_rate = 2 * diameter * density * t.contact_value * std::sqrt(pi * t.kT);
-  t.mean_free_path = t.collision_rate > 0 ? t.mean_speed / t.collision_rate : not_known;
   return t;
 }
 

@@ -16,6 +16,8 @@
 // from any wall (the measured side compares like with like: lesson 11).
 #pragma once
 
+#include <cstddef>
+
 #include "beyond/gas_statistics.hpp"
 #include "stage1_data.hpp"
 
@@ -24,17 +26,23 @@ namespace gas {
 // What kinetic theory predicts for a gas, from N, a, A1, A2 and E only.
 // [anchor: kinetic-theory]
 struct KineticTheory {
-  double kT = 0;               // E / N: two degrees of freedom per ball, unit mass
-  double mean_speed = 0;       // 2D Maxwell-Boltzmann: <v> = sqrt(pi kT / 2)
-  double rms_speed = 0;        // sqrt(<v^2>) = sqrt(2 kT), fixed by E alone
-  double area_fraction = 0;    // eta = N pi a^2 / (A1 A2)
-  double contact_value = 0;    // g(2a) of the reference fluid: (Z - 1) / (2 eta)
+  double kT = 0;                  // E / N: two degrees of freedom per ball, unit mass
+  double mean_speed = 0;          // <v> of N balls at fixed E (fixed_energy_mean_speed)
+  double maxwell_mean_speed = 0;  // its limit for many balls: sqrt(pi kT / 2)
+  double rms_speed = 0;           // sqrt(<v^2>) = sqrt(2 kT), fixed by E alone
+  double area_fraction = 0;       // eta = N pi a^2 / (A1 A2)
+  double contact_value = 0;    // g(2a) of the reference fluid at eta: (Z - 1) / (2 eta)
   double compressibility = 0;  // Z of the bulk fluid at eta: the reference
   double henderson = 0;        // Z at eta by Henderson: (1 + eta^2 / 8) / (1 - eta)^2
-  double collision_rate = 0;   // per ball, Enskog: 2 (2a) n g(2a) sqrt(pi kT)
-  double mean_free_path = 0;   // <v> / collision rate
 };
 // [/anchor: kinetic-theory]
+
+// The predictions of the bulk fluid (its equation of state, Enskog's rate)
+// hold for a gas of many balls: with N balls each ball has N - 1 partners,
+// not N, and the box's walls take their share, corrections of order 1 / N
+// that runs of a few balls resolve (lesson 11). Below this many balls the
+// screen says so instead of showing a number.
+inline constexpr std::size_t kinetic_theory_fewest_balls = 100;
 
 KineticTheory kinetic_theory(const Gas& gas);
 
@@ -43,6 +51,20 @@ KineticTheory kinetic_theory(const Gas& gas);
 // F(v) = 1 - exp(-v^2 / (2 kT)), the fraction of balls slower than v.
 double maxwell_density(double speed, double kT);
 double maxwell_fraction_below(double speed, double kT);
+
+// The mean speed of one of N balls whose total kinetic energy E = N kT is
+// fixed (unit mass; walls, so the momentum is not): <v> = sqrt(2 N kT)
+// Gamma(3/2) Gamma(N) / Gamma(N + 1/2), which tends to Maxwell's
+// sqrt(pi kT / 2) as N grows (lesson 11 derives it). NaN for N = 0.
+double fixed_energy_mean_speed(std::size_t balls, double kT);
+
+// Enskog's collision rate per ball per unit time of the bulk fluid at area
+// fraction eta (radius a, unit mass, k = 1): 2 (2a) n g(2a) sqrt(pi kT),
+// n = eta / (pi a^2), g(2a) the reference's contact value; and the mean free
+// path, Maxwell's mean speed over that rate, 1 / (2 sqrt 2 (2a) n g(2a)).
+// NaN where the reference has no value (eta beyond the fluid).
+double enskog_collision_rate(double eta, double radius, double kT);
+double enskog_mean_free_path(double eta, double radius);
 
 // The Henderson equation of state of hard discs and its contact value g(2a),
 // as functions of the area fraction.

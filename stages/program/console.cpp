@@ -101,10 +101,12 @@ Figures figures_of(const Control& control) {
                  control.ball_collisions);
 }
 
-// The statistics screen's histogram: a bin for every two columns, at most 40.
-int histogram_bins(int columns) {
-  return std::clamp(columns / 2 - 2, 1, 40);
-}
+// The statistics screen's histogram of speeds, and Boltzmann's H with it:
+// the same bins whatever the screen's width (H and its noise depend on the
+// bins, and --csv must not depend on --cols); draw_histogram merges or
+// spreads them over the columns it has. 36 bins of 2.5 v_rms / 36: two
+// columns each on an 80-column screen.
+constexpr int histogram_bins = 36;
 
 // One run of the program: stage 7's loop, with stage 6 drawing every step.
 class ConsoleRun {
@@ -124,7 +126,7 @@ class ConsoleRun {
     // statistics screen or --csv. It hears of each collision through stage
     // 7's one hook (`statistics_` is made in place and never moves).
     if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path) {
-      statistics_.emplace(control_.gas, histogram_bins(grid_.columns));
+      statistics_.emplace(control_.gas, histogram_bins);
       control_.observer = &*statistics_;
     }
     // Drawn in place: the frame fits the window, and fits it again when it
