@@ -110,7 +110,8 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
 // [/anchor: draw-histogram]
 
 // [anchor: draw-kinetic-figures]
-void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k) {
+void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k,
+                          const std::vector<std::string>& more_lines) {
   const KineticTheory& t = k.theory;
   const MeasuredFigures& m = k.measured;
   // Each measured figure beside the theory's: now, its average with its
@@ -120,7 +121,7 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
     return fmt::format("{:<16}{:<10}{:<22}{:<11}{}", label, now, average, shown(theory),
                        source);
   };
-  const std::vector<std::string> lines = {
+  std::vector<std::string> lines = {
       fmt::format("T {:.6f}  T0 {:g}  collisions {} (walls {}, balls {})", f.time,
                   f.display_step, f.wall_collisions + f.ball_collisions,
                   f.wall_collisions, f.ball_collisions),
@@ -152,6 +153,7 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       row("collision rate", "", shown(m.collision_rate), t.collision_rate, "Enskog"),
       row("mean free path", "", shown(k.mean_free_path), t.mean_free_path, "Enskog"),
   };
+  lines.insert(lines.end(), more_lines.begin(), more_lines.end());
   draw_figures(screen, lines);  // stage 6: the lines at their places
   // Below them, after a blank row, the histogram, if there is room for it.
   const int count = static_cast<int>(lines.size());

@@ -8,9 +8,10 @@
 //      crossovers, and the default scene as the program runs it.
 //   2. The number type: float, double, long double against a 113-bit
 //      reference (cost, energy drift, overlaps, how long each follows the
-//      exact motion).
+//      exact motion), beside the horizon the Lyapunov exponent predicts.
 //   3. Time reversal: forward k collisions per ball, B, back as long: the
-//      return error against k, for each number type.
+//      return error against k, for each number type, and how far back the
+//      exponent predicts B to bring the gas.
 //   4. What an event-driven program buys: a fixed-time-step program at
 //      several steps against the stages.
 //   5. The program as users run it: build/gas itself, timed as a process on
@@ -52,6 +53,7 @@
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "engine.hpp"
+#include "lyapunov_horizon.hpp"
 #include "program/console.hpp"
 #include "program_runs.hpp"
 #include "reference_gas.hpp"
@@ -114,6 +116,8 @@ struct Sizes {
   int horizon_events = 0;             // section 2: events compared with the reference
   int distance_samples = 0;           // section 2: moments the distance is measured at
   std::vector<int> reversal_k;        // section 3: collisions per ball forward
+  std::vector<int> h_theorem_k;       // section 3: the same for the H-theorem scene
+  long long lyapunov_samples = 0;     // sections 2, 3: renormalisations of the exponent
   std::size_t stepped_balls = 0;      // section 4
   double stepped_end = 0;             // section 4: model time of each run
   std::vector<double> stepped_dt;     // section 4: steps, in diameters per mean speed
@@ -133,6 +137,8 @@ Sizes sizes_for(bool smoke) {
             .horizon_events = 300,
             .distance_samples = 10,
             .reversal_k = {1, 2},
+            .h_theorem_k = {5},
+            .lyapunov_samples = 100,
             .stepped_balls = 100,
             .stepped_end = 5,
             .stepped_dt = {0.5, 0.1},
@@ -151,6 +157,8 @@ Sizes sizes_for(bool smoke) {
           .horizon_events = 6000,
           .distance_samples = 200,
           .reversal_k = {1, 2, 3, 5, 8, 12, 20, 30, 50},
+          .h_theorem_k = {5, 10, 15, 18, 20, 22, 25, 30},
+          .lyapunov_samples = 4000,
           .stepped_balls = 2000,
           .stepped_end = 100,
           .stepped_dt = {0.5, 0.25, 0.1, 0.05, 0.02, 0.01},
@@ -181,6 +189,10 @@ Gas default_gas() {
 
 Gas crowd_gas() {
   return gas::read_scene_file(std::string(GAS_SOURCE_DIR) + "/data/crowd.scene");
+}
+
+Gas h_theorem_gas() {
+  return gas::read_scene_file(std::string(GAS_SOURCE_DIR) + "/data/h-theorem.scene");
 }
 
 // ------------------------------------------------------------ 1. throughput
@@ -723,6 +735,26 @@ int run(const Settings& settings) {
   progress("2/5 number types: float, double, long double against __float128");
   std::vector<TypeFigures> types;
   std::vector<DistanceRow> distance_rows;
+  // The Lyapunov exponent of each scene, and the horizons it predicts.
+  std::vector<gas::benchmark::ExponentFigures> exponents;
+  for (const auto& [name, gas] : {std::pair{std::string("default"), default_gas()},
+                                  std::pair{std::string("crowd"), crowd_gas()},
+                                  std::pair{std::string("h-theorem"), h_theorem_gas()}}) {
+    progress("  {}: the Lyapunov exponent, {} renormalisations", name,
+             sizes.lyapunov_samples);
+    exponents.push_back(gas::benchmark::measure_exponent(name, gas, sizes.lyapunov_samples));
+  }
+  {
+    Csv csv(settings.out / "lyapunov.csv",
+            "scene,lyapunov,lyapunov_error,per_collision_per_ball,"
+            "per_collision_per_ball_error,samples,predicted_float,predicted_double,"
+            "predicted_long_double");
+    for (const auto& e : exponents) {
+      csv.row("{},{:.6g},{:.3g},{:.6g},{:.3g},{},{:.4g},{:.4g},{:.4g}", e.scene,
+              e.per_time, e.per_time_error, e.per_ball, e.per_ball_error, e.samples,
+              e.single, e.twice, e.extended);
+    }
+  }
   {
     const Gas seven = default_gas(), crowd = crowd_gas();
     for (const auto& [name, gas, drift] :
@@ -804,6 +836,12 @@ int run(const Settings& settings) {
           reversal.push_back(reverse_reference<__float128>(name, gas, k));
         reversal.push_back(reverse_stages(name, gas, k));
       }
+    }
+    // The H-theorem scene: 1024 balls, the stages only (the reference kernel
+    // is O(N^2) a collision).
+    for (const int k : sizes.h_theorem_k) {
+      progress("  h-theorem: k = {}", k);
+      reversal.push_back(reverse_stages("h-theorem", h_theorem_gas(), k));
     }
     for (const ReversalRow& r : reversal)
       csv.row("{},{},{},{:.6g},{:.4g}", r.scene, r.type, r.per_ball, r.time, r.error);
@@ -1047,6 +1085,33 @@ int run(const Settings& settings) {
       "two balls: each bit of mantissa buys a fixed number of collisions, so the "
       "trusted horizon grows in proportion to the bits, and no precision makes it "
       "infinite.\n\n");
+  // The horizon the Lyapunov exponent predicts, beside the one measured.
+  add("The factor is the largest Lyapunov exponent lambda (lesson 12), measured by "
+      "the stages with the tangent dynamics of `stages/beyond/lyapunov.hpp` "
+      "(renormalisations shown; `lyapunov.csv`). An error of one unit in the last "
+      "place of the coordinates, eps = 2^(floor(log2 max(A1, A2)) − digits + 1), "
+      "grows as e^(lambda t) and reaches a hundredth of a radius after ln(a / (100 "
+      "eps)) / lambda: the *predicted* trusted horizon, in collisions a ball, beside "
+      "the *measured* one of the table above.\n\n");
+  add("| scene | lambda per unit time | per collision a ball | renormalisations | float: "
+      "predicted / measured | double | long double "
+      "|\n|---|---:|---:|---:|---:|---:|---:|\n");
+  auto measured_trusted = [&](const std::string& scene, const char* type) {
+    for (const TypeFigures& f : types)
+      if (f.scene == scene && f.type == type && f.trusted_per_ball >= 0)
+        return fmt::format("{:.1f}", f.trusted_per_ball);
+    return std::string(scene == "h-theorem" ? "not run" : "beyond the run");
+  };
+  for (const auto& e : exponents) {
+    add(fmt::format("| {} | {:.4g} ± {:.2g} | {:.3g} ± {:.2g} | {} | {:.1f} / {} | "
+                    "{:.1f} / {} | {:.1f} / {} |\n",
+                    e.scene, e.per_time, e.per_time_error, e.per_ball, e.per_ball_error,
+                    e.samples, e.single, measured_trusted(e.scene, "float"), e.twice,
+                    measured_trusted(e.scene, "double"), e.extended,
+                    measured_trusted(e.scene, "long double")));
+  }
+  add("\n(The H-theorem scene's 1024 balls are not run against the 113-bit kernel, "
+      "whose every collision costs O(N²); section 3 measures its horizon by B.)\n\n");
 
   // 3.
   add("## 3. Time reversal\n\n");
@@ -1072,8 +1137,34 @@ int run(const Settings& settings) {
     }
     add("\n");
   }
+  add("Scene `h-theorem` (1024 balls; the stages only, the reference kernel being "
+      "O(N²) a collision):\n\n| k per ball | stages (double) |\n|---:|---:|\n");
+  for (const ReversalRow& r : reversal)
+    if (r.scene == "h-theorem") add(fmt::format("| {} | {:.2g} |\n", r.per_ball, r.error));
+  add("\n");
   add("An error that grows to the size of the table means the gas did not come back: "
       "the reversed run parted from the forward one somewhere on the way.\n\n");
+  // How far back B brings the gas: predicted by the exponent, and measured.
+  add("How far back B brings the gas, predicted and measured. The return error is "
+      "that of the forward run at the turn, made when B is pressed, and grown "
+      "again on the way back, e^(lambda t) eps: the prediction is the trusted "
+      "horizon of section 2, ln(a / (100 eps)) / lambda collisions a ball for the "
+      "stages' double. Measured: the largest k of the tables whose return error "
+      "(stages, double) is below a hundredth of a radius, and the next k tried.\n\n"
+      "| scene | predicted (double) | measured: back from | not from |\n"
+      "|---|---:|---:|---:|\n");
+  for (const auto& e : exponents) {
+    int back = 0, not_back = 0;
+    for (const ReversalRow& r : reversal) {
+      if (r.scene != e.scene || r.type != "stages (double)") continue;
+      if (r.error < 0.01 && not_back == 0) back = r.per_ball;
+      if (r.error >= 0.01 && not_back == 0) not_back = r.per_ball;
+    }
+    add(fmt::format("| {} | {:.1f} | {} | {} |\n", e.scene, e.twice,
+                    back > 0 ? fmt::format("{}", back) : "—",
+                    not_back > 0 ? fmt::format("{}", not_back) : "—"));
+  }
+  add("\n");
 
   // 4.
   const double pressure_scale =
