@@ -303,8 +303,9 @@ TEST_SUITE("lyapunov") {
                                            "data/default.scene")),
                                        "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
-    for (const auto& [name, gas] : {std::pair{"default", seven}, std::pair{"crowd", crowd},
-                                    std::pair{"dense", dense_gas()}}) {
+    for (const auto& [name, gas] : {std::pair{std::string("default"), seven},
+                                    std::pair{std::string("crowd"), crowd},
+                                    std::pair{std::string("dense"), dense_gas()}}) {
       CAPTURE(name);
       CHECK(twin_mismatch(gas, 2, 1e-9 * gas.radius) < 1e-2);
     }
@@ -316,8 +317,9 @@ TEST_SUITE("lyapunov") {
                                        "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
     for (const auto& [name, gas, samples] :
-         {std::tuple{"default", seven, 2000LL}, std::tuple{"crowd", crowd, 1000LL},
-          std::tuple{"dense", dense_gas(), 400LL}}) {
+         {std::tuple{std::string("default"), seven, 2000LL},
+          std::tuple{std::string("crowd"), crowd, 1000LL},
+          std::tuple{std::string("dense"), dense_gas(), 400LL}}) {
       CAPTURE(name);
       const TwinExponents e = twin_exponents(gas, samples);
       CAPTURE(e.twins.value);
