@@ -2,6 +2,9 @@
 // lyapunov_horizon.hpp.
 #include "lyapunov_horizon.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "beyond/lyapunov.hpp"
 #include "beyond/lyapunov_screen.hpp"
 #include "beyond/strategy.hpp"
@@ -25,6 +28,52 @@ ExponentFigures measure_exponent(const std::string& scene, const Gas& gas,
           f.per_collision_per_ball_error, f.samples,
           h.single,        h.twice,
           h.extended};
+}
+
+namespace {
+
+// A bare change carried along on stage 7's hook.
+struct Carried final : CollisionObserver {
+  TangentDynamics tangent;
+  explicit Carried(const Gas& gas) : tangent(gas, 1989) {}
+  void before_collision(const Gas& gas, const Collision& c) override {
+    tangent.before_collision(gas, c);
+  }
+};
+
+}  // namespace
+
+Horizons horizons_along_the_run(const Gas& gas, double most_per_ball) {
+  Gas start = gas;
+  start.display_step = 1e300;
+  Control control = start_control_for(start);
+  Carried carried(control.gas);
+  control.observer = &carried;
+  const double distance = horizon_distance_radii * gas.radius;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const int digits[3] = {std::numeric_limits<float>::digits,
+                         std::numeric_limits<double>::digits,
+                         std::numeric_limits<long double>::digits};
+  double reached[3] = {nan, nan, nan};
+  const auto n = static_cast<double>(gas.balls.size());
+  double growth = 0;  // ln of the growth so far, less what scaling took out
+  while (std::isnan(reached[2])) {
+    take_step(control, never, nullptr);
+    const double per_ball =
+        static_cast<double>(control.wall_collisions + control.ball_collisions) / n;
+    if (per_ball > most_per_ball) break;
+    const double norm = carried.tangent.norm_at(control.gas.time);
+    for (int t = 0; t < 3; ++t) {
+      if (std::isnan(reached[t]) &&
+          growth + std::log(norm) >= std::log(distance / coordinate_ulp(gas, digits[t])))
+        reached[t] = per_ball;
+    }
+    if (norm > 1e100) {  // far from overflow, and no rounding of the growth
+      growth += std::log(norm);
+      carried.tangent.scale_at(control.gas.time, 1 / norm);
+    }
+  }
+  return {reached[0], reached[1], reached[2]};
 }
 
 }  // namespace gas::benchmark

@@ -29,4 +29,14 @@ struct ExponentFigures {
 ExponentFigures measure_exponent(const std::string& scene, const Gas& gas,
                                  long long samples);
 
+// The same horizons from the growth along the very stretch the report
+// measures: a change of norm 1, in a direction drawn at random, followed
+// from T = 0 along the stages' run of `gas` (no average: this one path);
+// the collisions a ball after which it has grown by a / (100 eps), for
+// float, double and long double (NaN if not within `most_per_ball`).
+struct Horizons {
+  double single = 0, twice = 0, extended = 0;
+};
+Horizons horizons_along_the_run(const Gas& gas, double most_per_ball);
+
 }  // namespace gas::benchmark
