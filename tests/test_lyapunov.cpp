@@ -112,8 +112,8 @@ double finite_difference_mismatch(const Gas& start, double end, double h,
       const double mapped[4] = {dq.x, dq.y, t.px, t.py};
       for (std::size_t c = 0; c < 4; ++c) {
         const double difference = (s_up[4 * i + c] - s_down[4 * i + c]) / (2 * h);
-        worst = std::max(worst, std::fabs(difference - mapped[c]) /
-                                    (1 + std::fabs(mapped[c])));
+        worst = std::max(worst,
+                         std::fabs(difference - mapped[c]) / (1 + std::fabs(mapped[c])));
       }
     }
   }
@@ -241,10 +241,9 @@ TwinExponents twin_exponents(const Gas& start, long long samples) {
 // A dense gas: 256 balls of radius 1 on a lattice at area fraction 0.5.
 Gas dense_gas() {
   const double side = std::sqrt(256 * std::acos(-1.0) / 0.5);
-  return gas::parse_scene(
-      "a 1\nT0 1\nA1 " + std::to_string(side) + "\nA2 " + std::to_string(side) +
-          "\nlattice 256 1989 1\n",
-      "dense");
+  return gas::parse_scene("a 1\nT0 1\nA1 " + std::to_string(side) + "\nA2 " +
+                              std::to_string(side) + "\nlattice 256 1989 1\n",
+                          "dense");
 }
 
 }  // namespace
@@ -262,8 +261,8 @@ TEST_SUITE("lyapunov") {
   TEST_CASE("the map at a wall: finite differences of stage 5's bounce") {
     // One ball bouncing off the wall x = 40 (its centre at x = 39) at T = 2,
     // the other flying free; run to T = 5.
-    const Gas gas = gas::testing::table_with(
-        {{35, 12, 2, 0.7, 0}, {10, 10, -0.3, 0.4, 0}});
+    const Gas gas =
+        gas::testing::table_with({{35, 12, 2, 0.7, 0}, {10, 10, -0.3, 0.4, 0}});
     CHECK(finite_difference_mismatch(gas, 5, fd_step, CollisionKind::vertical_wall) <
           fd_tolerance);
     // And off y = 30 (centre at 29).
@@ -274,8 +273,8 @@ TEST_SUITE("lyapunov") {
 
   TEST_CASE("the map of two balls: finite differences of stage 5's collision") {
     // Head on at an angle: the line of centres 30 degrees off the velocities.
-    const Gas gas = gas::testing::table_with(
-        {{10, 15, 1.2, 0.1, 0}, {20, 16, -0.8, -0.2, 0}});
+    const Gas gas =
+        gas::testing::table_with({{10, 15, 1.2, 0.1, 0}, {20, 16, -0.8, -0.2, 0}});
     CHECK(finite_difference_mismatch(gas, 7, fd_step, CollisionKind::balls) <
           fd_tolerance);
   }
@@ -283,10 +282,8 @@ TEST_SUITE("lyapunov") {
   TEST_CASE("the map of a grazing pair: finite differences, the map's entries large") {
     // The centres' lines 1.98 apart (2a = 2): the balls barely touch, and a
     // change of their offset moves the collision a long way.
-    const Gas gas =
-        gas::testing::table_with({{10, 15, 1, 0, 0}, {20, 16.98, -1, 0, 0}});
-    CHECK(finite_difference_mismatch(gas, 8, 1e-7, CollisionKind::balls) <
-          fd_tolerance);
+    const Gas gas = gas::testing::table_with({{10, 15, 1, 0, 0}, {20, 16.98, -1, 0, 0}});
+    CHECK(finite_difference_mismatch(gas, 8, 1e-7, CollisionKind::balls) < fd_tolerance);
   }
 
   TEST_CASE("twins a tiny distance apart differ by the tangent vector (stage 7's loop)") {
@@ -299,9 +296,9 @@ TEST_SUITE("lyapunov") {
     // dense), and far above the rounding of the coordinates (1e-16 relative,
     // grown alike: 1e-12 of a radius). A wrong term of the map misses by
     // order 1: 1e-2 tells the two apart.
-    const Gas seven = gas::parse_scene(gas::testing::read_file(gas::testing::source_path(
-                                           "data/default.scene")),
-                                       "default");
+    const Gas seven = gas::parse_scene(
+        gas::testing::read_file(gas::testing::source_path("data/default.scene")),
+        "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
     for (const auto& [name, gas] : {std::pair{std::string("default"), seven},
                                     std::pair{std::string("crowd"), crowd},
@@ -312,9 +309,9 @@ TEST_SUITE("lyapunov") {
   }
 
   TEST_CASE("Benettin's twins give the tangent-space exponent within its error") {
-    const Gas seven = gas::parse_scene(gas::testing::read_file(gas::testing::source_path(
-                                           "data/default.scene")),
-                                       "default");
+    const Gas seven = gas::parse_scene(
+        gas::testing::read_file(gas::testing::source_path("data/default.scene")),
+        "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
     for (const auto& [name, gas, samples] :
          {std::tuple{std::string("default"), seven, 2000LL},
@@ -331,5 +328,93 @@ TEST_SUITE("lyapunov") {
       // Both along the same path: within the tangent value's own error.
       CHECK(std::fabs(e.twins.value - e.tangent.value) < e.tangent.error);
     }
+  }
+
+  TEST_CASE(
+      "the precision horizon: ln(d / eps) / lambda, eps one ulp of the table's size") {
+    Gas gas = gas::testing::table_with({});
+    gas.width = 256;  // ulp of numbers in [256, 512): 2^(8 - 52) in double
+    gas.height = 192;
+    CHECK(gas::coordinate_ulp(gas, 53) == std::ldexp(1.0, -44));
+    CHECK(gas::coordinate_ulp(gas, 24) == std::ldexp(1.0, -15));
+    // e^10 = d / eps: ten e-folds, at 2 a collision a ball, take 5.
+    CHECK(gas::precision_horizon(2, std::exp(10.0), 1) ==
+          doctest::Approx(5).epsilon(1e-12));
+    gas::LyapunovFigures f;
+    f.warming_up = false;
+    f.exponent = {0.025, 0.001};
+    f.per_collision_per_ball = 2.5;
+    const gas::PrecisionHorizons h = gas::precision_horizons(gas, f);
+    // a = 1: d = 0.01, so double's horizon is ln(0.01 / 2^-44) / 2.5.
+    CHECK(h.twice == doctest::Approx(std::log(0.01 / std::ldexp(1.0, -44)) / 2.5));
+    CHECK(h.single < h.twice);
+    CHECK(h.twice < h.extended);
+  }
+
+  TEST_CASE("the screen's lines and the --csv block") {
+    const Gas gas = gas::testing::table_with({{10, 10, 1, 0, 0}});
+    gas::LyapunovFigures f;  // warming up
+    const auto warming = gas::lyapunov_lines(gas, f);
+    REQUIRE(warming.size() == 1);
+    CHECK(warming[0].find("warming up") != std::string::npos);
+    CHECK(gas::lyapunov_csv_row(f) == ",nan,nan");
+    f.warming_up = false;
+    f.exponent = {0.125, 0.0625};
+    f.per_collision_per_ball = 2.5;
+    f.per_collision_per_ball_error = 0.25;
+    const auto lines = gas::lyapunov_lines(gas, f);
+    REQUIRE(lines.size() == 2);
+    CHECK(lines[0].find("0.125 +- 0.062") != std::string::npos);
+    CHECK(lines[0].find("2.5 +- 0.25") != std::string::npos);
+    CHECK(lines[1].find("double") != std::string::npos);
+    for (const std::string& line : lines)
+      CHECK(line.size() <= 76);  // an 80-column screen
+    CHECK(gas::lyapunov_csv_header() == ",lyapunov,lyapunov_error");
+    CHECK(gas::lyapunov_csv_row(f) == ",0.125,0.0625");
+  }
+
+  TEST_CASE("B starts the exponent afresh; A restarts its averages at the next T_k") {
+    const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
+    gas::Control control = gas::start_control_for(crowd);
+    gas::LyapunovExponent lyapunov(control.gas);
+    control.observer = &lyapunov;
+    while (lyapunov.measured(control.gas).samples < 50)
+      gas::take_step(control, 1e9, nullptr);
+    CHECK(!lyapunov.measured(control.gas).warming_up);
+    lyapunov.restart();  // A
+    const long long before = lyapunov.measured(control.gas).samples;
+    while (lyapunov.measured(control.gas).samples == before)
+      gas::take_step(control, 1e9, nullptr);
+    CHECK(lyapunov.measured(control.gas).samples == 1);
+    gas::press_key(control, 'B');  // tells the observer before the rows are rewritten
+    CHECK(lyapunov.measured(control.gas).warming_up);
+    CHECK(lyapunov.measured(control.gas).samples == 0);
+    while (lyapunov.measured(control.gas).samples < 50)
+      gas::take_step(control, 1e9, nullptr);
+    // The reversed gas's exponent is the gas's own (the crowd's: 0.13 a unit time).
+    CHECK(lyapunov.measured(control.gas).exponent.value > 0.05);
+  }
+
+  TEST_CASE("the program: --csv ends with lyapunov,lyapunov_error, known at the end") {
+    const gas::testing::Scratch scratch;
+    const std::string csv = scratch.file("crowd.csv");
+    const auto run = gas::testing::run_program(
+        {"data/crowd.scene", "--until", "5000", "--mode", "none", "--csv", csv});
+    REQUIRE(run.status == 0);
+    const std::vector<std::string> lines =
+        gas::testing::lines_of(gas::testing::read_file(csv));
+    REQUIRE(lines.size() > 2);
+    const std::vector<std::string> names = gas::testing::fields_of(lines.front());
+    const std::vector<std::string> last = gas::testing::fields_of(lines.back());
+    REQUIRE(names.size() == last.size());
+    CHECK(names[names.size() - 2] == "lyapunov");
+    CHECK(names.back() == "lyapunov_error");
+    const double lambda = std::stod(last[last.size() - 2]);
+    const double error = std::stod(last.back());
+    // The crowd's exponent, 0.134 +- 0.001 over T = 50000 (lesson 12): at
+    // T = 5000 within a few of its own errors of that, and known to 5 %.
+    CHECK(std::fabs(lambda - 0.134) < 5 * error + 0.002);
+    CHECK(error > 0);
+    CHECK(error < 0.05 * lambda);
   }
 }

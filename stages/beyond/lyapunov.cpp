@@ -13,7 +13,8 @@ LyapunovExponent::LyapunovExponent(const Gas& gas, std::uint64_t seed)
 
 void LyapunovExponent::start_warm_up(double time) {
   warm_up_start_ = time;
-  warm_up_until_ = collisions_ + warm_up_collisions_per_ball * static_cast<long long>(balls_);
+  warm_up_until_ =
+      collisions_ + warm_up_collisions_per_ball * static_cast<long long>(balls_);
   interval_ = 0;
   blocking_.clear();
   clear_at_next_ = false;

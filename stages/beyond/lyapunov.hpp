@@ -34,13 +34,14 @@ namespace gas {
 
 // What the exponent's measurement says, as of the last renormalisation.
 struct LyapunovFigures {
-  bool warming_up = true;            // the change is still turning to its fastest direction
-  Average exponent;                  // lambda, per unit model time
-  double collision_rate = not_known; // collisions (walls and pairs) per unit time, meanwhile
+  bool warming_up = true;  // the change is still turning to its fastest direction
+  Average exponent;        // lambda, per unit model time
+  double collision_rate =
+      not_known;  // collisions (walls and pairs) per unit time, meanwhile
   double per_collision = not_known;  // lambda / collision_rate: e-folds per collision
   double per_collision_per_ball = not_known;  // lambda N / collision_rate
   double per_collision_per_ball_error = not_known;
-  long long samples = 0;             // renormalisations averaged
+  long long samples = 0;  // renormalisations averaged
 };
 
 class LyapunovExponent final : public CollisionObserver {

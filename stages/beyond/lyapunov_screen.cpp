@@ -41,13 +41,15 @@ std::vector<std::string> lyapunov_lines(const Gas& gas, const LyapunovFigures& f
       fmt::format("Lyapunov /time  {}  /collision a ball  {}",
                   with_error(f.exponent.value, f.exponent.error),
                   with_error(f.per_collision_per_ball, f.per_collision_per_ball_error)),
-      fmt::format("  horizon to a/100, collisions a ball: float {:.1f} double {:.1f} "
-                  "long double {:.1f}",
+      fmt::format("  horizon to a/100 (collisions a ball): float {:.2g} double {:.2g} "
+                  "long double {:.2g}",
                   h.single, h.twice, h.extended)};
 }
 // [/anchor: lyapunov-lines]
 
-std::string lyapunov_csv_header() { return ",lyapunov,lyapunov_error"; }
+std::string lyapunov_csv_header() {
+  return ",lyapunov,lyapunov_error";
+}
 
 std::string lyapunov_csv_row(const LyapunovFigures& f) {
   return fmt::format(",{:.17g},{:.17g}", f.exponent.value, f.exponent.error);

@@ -40,7 +40,7 @@ void collide_tangents(BallTangent& i, BallTangent& j, Point qi, Point qj, Point 
   const double pn = px * nx + py * ny;              // dp_ij . n
   // The time shift: the changed balls touch dt_c later (dq_ij + v_ij dt_c
   // has no part along n), and the normal they touch along is turned by dn.
-  const double shift = -qn / vn;                  // dt_c
+  const double shift = -qn / vn;                     // dt_c
   const double nx_turn = (qx + vx * shift) / sigma;  // dn, perpendicular to n
   const double ny_turn = (qy + vy * shift) / sigma;
   const double v_turn = vx * nx_turn + vy * ny_turn;  // v_ij . dn
@@ -68,8 +68,8 @@ void TangentDynamics::restart(double time, std::uint64_t seed) {
   // Gaussian components: a direction uniform on the sphere of 4N dimensions.
   std::mt19937_64 random(seed);
   std::normal_distribution<double> normal;
-  for (BallTangent& t : balls_) t = {normal(random), normal(random), normal(random),
-                                     normal(random), time};
+  for (BallTangent& t : balls_)
+    t = {normal(random), normal(random), normal(random), normal(random), time};
   const double norm = norm_at(time);
   if (norm > 0) scale_at(time, 1 / norm);
 }

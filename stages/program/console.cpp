@@ -302,7 +302,7 @@ class ConsoleRun {
   GridSize grid_;
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
-  std::optional<GasStatistics> statistics_;  // for --mode stats and --csv only
+  std::optional<GasStatistics> statistics_;   // for --mode stats and --csv only
   std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 12)
   std::optional<ObserverList> observers_;     // both on stage 7's hook
   TextScreen screen_;

@@ -743,7 +743,8 @@ int run(const Settings& settings) {
                                   std::pair{std::string("h-theorem"), h_theorem_gas()}}) {
     progress("  {}: the Lyapunov exponent, {} renormalisations", name,
              sizes.lyapunov_samples);
-    exponents.push_back(gas::benchmark::measure_exponent(name, gas, sizes.lyapunov_samples));
+    exponents.push_back(
+        gas::benchmark::measure_exponent(name, gas, sizes.lyapunov_samples));
     along.push_back(gas::benchmark::horizons_along_the_run(gas, 60));
   }
   {
@@ -754,10 +755,11 @@ int run(const Settings& settings) {
             "along_run_long_double");
     for (std::size_t i = 0; i < exponents.size(); ++i) {
       const auto& e = exponents[i];
-      csv.row("{},{:.6g},{:.3g},{:.6g},{:.3g},{},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g}",
-              e.scene, e.per_time, e.per_time_error, e.per_ball, e.per_ball_error,
-              e.samples, e.single, e.twice, e.extended, along[i].single, along[i].twice,
-              along[i].extended);
+      csv.row(
+          "{},{:.6g},{:.3g},{:.6g},{:.3g},{},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g}",
+          e.scene, e.per_time, e.per_time_error, e.per_ball, e.per_ball_error, e.samples,
+          e.single, e.twice, e.extended, along[i].single, along[i].twice,
+          along[i].extended);
     }
   }
   {
@@ -1119,14 +1121,14 @@ int run(const Settings& settings) {
   };
   for (std::size_t i = 0; i < exponents.size(); ++i) {
     const auto& e = exponents[i];
-    add(fmt::format("| {} | {} | {} | {} | {:.1f} / {:.1f} / {} | {:.1f} / {:.1f} / {} | "
-                    "{:.1f} / {:.1f} / {} |\n",
-                    e.scene, with_error(e.per_time, e.per_time_error, "{:.4g}"),
-                    with_error(e.per_ball, e.per_ball_error, "{:.3g}"), e.samples,
-                    e.single, along[i].single, measured_trusted(e.scene, "float"),
-                    e.twice, along[i].twice, measured_trusted(e.scene, "double"),
-                    e.extended, along[i].extended,
-                    measured_trusted(e.scene, "long double")));
+    add(fmt::format(
+        "| {} | {} | {} | {} | {:.1f} / {:.1f} / {} | {:.1f} / {:.1f} / {} | "
+        "{:.1f} / {:.1f} / {} |\n",
+        e.scene, with_error(e.per_time, e.per_time_error, "{:.4g}"),
+        with_error(e.per_ball, e.per_ball_error, "{:.3g}"), e.samples, e.single,
+        along[i].single, measured_trusted(e.scene, "float"), e.twice, along[i].twice,
+        measured_trusted(e.scene, "double"), e.extended, along[i].extended,
+        measured_trusted(e.scene, "long double")));
   }
   add("\n(The H-theorem scene's 1024 balls are not run against the 113-bit kernel, "
       "whose every collision costs O(N²); section 3 measures its horizon by B.)\n\n");
@@ -1158,7 +1160,8 @@ int run(const Settings& settings) {
   add("Scene `h-theorem` (1024 balls; the stages only, the reference kernel being "
       "O(N²) a collision):\n\n| k per ball | stages (double) |\n|---:|---:|\n");
   for (const ReversalRow& r : reversal)
-    if (r.scene == "h-theorem") add(fmt::format("| {} | {:.2g} |\n", r.per_ball, r.error));
+    if (r.scene == "h-theorem")
+      add(fmt::format("| {} | {:.2g} |\n", r.per_ball, r.error));
   add("\n");
   add("An error that grows to the size of the table means the gas did not come back: "
       "the reversed run parted from the forward one somewhere on the way.\n\n");

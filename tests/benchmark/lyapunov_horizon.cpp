@@ -23,10 +23,14 @@ ExponentFigures measure_exponent(const std::string& scene, const Gas& gas,
   while ((f = lyapunov.measured(control.gas)).samples < samples)
     take_step(control, never, nullptr);
   const PrecisionHorizons h = precision_horizons(control.gas, f);
-  return {scene,           f.exponent.value,
-          f.exponent.error, f.per_collision_per_ball,
-          f.per_collision_per_ball_error, f.samples,
-          h.single,        h.twice,
+  return {scene,
+          f.exponent.value,
+          f.exponent.error,
+          f.per_collision_per_ball,
+          f.per_collision_per_ball_error,
+          f.samples,
+          h.single,
+          h.twice,
           h.extended};
 }
 

@@ -17,9 +17,9 @@ namespace gas::benchmark {
 
 struct ExponentFigures {
   std::string scene;
-  double per_time = 0, per_time_error = 0;  // lambda per unit model time
-  double per_ball = 0, per_ball_error = 0;  // e-folds per collision a ball
-  long long samples = 0;                    // renormalisations averaged
+  double per_time = 0, per_time_error = 0;     // lambda per unit model time
+  double per_ball = 0, per_ball_error = 0;     // e-folds per collision a ball
+  long long samples = 0;                       // renormalisations averaged
   double single = 0, twice = 0, extended = 0;  // predicted horizons, collisions a ball
 };
 
