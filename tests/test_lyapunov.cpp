@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "beyond/blocking.hpp"
+#include "beyond/kinetic_screen.hpp"
 #include "beyond/lyapunov.hpp"
 #include "beyond/lyapunov_screen.hpp"
 #include "beyond/random_placement.hpp"
@@ -416,5 +417,32 @@ TEST_SUITE("lyapunov") {
     CHECK(std::fabs(lambda - 0.134) < 5 * error + 0.002);
     CHECK(error > 0);
     CHECK(error < 0.05 * lambda);
+  }
+
+  TEST_CASE(
+      "the statistics screen: the exponent's lines as far as the histogram has room") {
+    const gas::Figures f = gas::testing::some_figures();
+    gas::KineticFigures k;
+    k.theory.kT = 1;
+    k.theory.mean_speed = 1.25;
+    k.measured.speed_fractions.assign(20, 0.05);
+    k.measured.bin_width = 0.125;
+    const std::vector<std::string> more = {"Lyapunov one", "  Lyapunov two"};
+    auto shows = [](const gas::TextScreen& screen, const std::string& text) {
+      for (const std::string& line : screen.lines)
+        if (line.find(text) != std::string::npos) return true;
+      return false;
+    };
+    // 80 x 24: the article's terminal; the histogram first.
+    gas::TextScreen small = gas::prepare_character_screen(80, 22);
+    gas::draw_kinetic_figures(small, f, k, more);
+    CHECK(shows(small, "speeds:"));
+    CHECK(!shows(small, "Lyapunov one"));
+    // 80 x 26: both lines, and the histogram below them.
+    gas::TextScreen tall = gas::prepare_character_screen(80, 24);
+    gas::draw_kinetic_figures(tall, f, k, more);
+    CHECK(shows(tall, "speeds:"));
+    CHECK(shows(tall, "Lyapunov one"));
+    CHECK(shows(tall, "Lyapunov two"));
   }
 }

@@ -153,7 +153,13 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       row("collision rate", "", shown(m.collision_rate), t.collision_rate, "Enskog"),
       row("mean free path", "", shown(k.mean_free_path), t.mean_free_path, "Enskog"),
   };
-  lines.insert(lines.end(), more_lines.begin(), more_lines.end());
+  // Other observers' lines after them, as many as leave the histogram its
+  // room: a blank row, a title, two rows of bars, the axis, and the border.
+  const auto room = static_cast<std::size_t>(
+      std::max(0, screen.rows - 7 - static_cast<int>(lines.size())));
+  lines.insert(lines.end(), more_lines.begin(),
+               more_lines.begin() +
+                   static_cast<std::ptrdiff_t>(std::min(room, more_lines.size())));
   draw_figures(screen, lines);  // stage 6: the lines at their places
   // Below them, after a blank row, the histogram, if there is room for it.
   const int count = static_cast<int>(lines.size());

@@ -45,7 +45,8 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics);
 // The statistics screen: the figures at fixed places inside the border, each
 // beside its prediction, and under them the histogram of speeds with the
 // Maxwell-Boltzmann curve, as far as the screen has room. `more_lines`, from
-// other observers (the Lyapunov exponent, lesson 12), follow the figures.
+// other observers (the Lyapunov exponent, lesson 12), follow the figures as
+// far as they leave the histogram room (all of them from 26 rows up).
 void draw_kinetic_figures(TextScreen& screen, const Figures& figures,
                           const KineticFigures& kinetic,
                           const std::vector<std::string>& more_lines = {});
