@@ -280,7 +280,8 @@ TEST_SUITE("lyapunov") {
           fd_tolerance);
   }
 
-  TEST_CASE("the map of a grazing pair: finite differences, the map's entries large") {
+  TEST_CASE(
+      "the map of a grazing pair: finite differences where the map's entries are large") {
     // The centres' lines 1.98 apart (2a = 2): the balls barely touch, and a
     // change of their offset moves the collision a long way.
     const Gas gas = gas::testing::table_with({{10, 15, 1, 0, 0}, {20, 16.98, -1, 0, 0}});
@@ -332,7 +333,8 @@ TEST_SUITE("lyapunov") {
   }
 
   TEST_CASE(
-      "the precision horizon: ln(d / eps) / lambda, eps one ulp of the table's size") {
+      "the precision horizon: ln(d / eps) / lambda with eps one ulp of the table's "
+      "size") {
     Gas gas = gas::testing::table_with({});
     gas.width = 256;  // ulp of numbers in [256, 512): 2^(8 - 52) in double
     gas.height = 192;
@@ -374,7 +376,7 @@ TEST_SUITE("lyapunov") {
     CHECK(gas::lyapunov_csv_row(f) == ",0.125,0.0625");
   }
 
-  TEST_CASE("B starts the exponent afresh; A restarts its averages at the next T_k") {
+  TEST_CASE("B starts the exponent afresh and A restarts its averages at the next T_k") {
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
     gas::Control control = gas::start_control_for(crowd);
     gas::LyapunovExponent lyapunov(control.gas);
@@ -396,7 +398,7 @@ TEST_SUITE("lyapunov") {
     CHECK(lyapunov.measured(control.gas).exponent.value > 0.05);
   }
 
-  TEST_CASE("the program: --csv ends with lyapunov,lyapunov_error, known at the end") {
+  TEST_CASE("the program: --csv ends with lyapunov and lyapunov_error known at the end") {
     const gas::testing::Scratch scratch;
     const std::string csv = scratch.file("crowd.csv");
     const auto run = gas::testing::run_program(
