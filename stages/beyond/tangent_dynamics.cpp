@@ -28,11 +28,11 @@ void reflect_tangent(BallTangent& t, CollisionKind kind) {
 // [anchor: collide-tangents]
 void collide_tangents(BallTangent& i, BallTangent& j, Point qi, Point qj, Point vi,
                       Point vj) {
-  const double dx = qi.x - qj.x, dy = qi.y - qj.y;  // q_ij, of length 2a at contact
-  const double sigma = std::hypot(dx, dy);
-  const double nx = dx / sigma, ny = dy / sigma;    // n, the line of centres
-  const double vx = vi.x - vj.x, vy = vi.y - vj.y;  // v_ij
-  const double vn = vx * nx + vy * ny;              // v_ij . n (< 0: approaching)
+  const double dx = qi.x - qj.x, dy = qi.y - qj.y;    // q_ij, of length 2a at contact
+  const double sigma = std::sqrt(dx * dx + dy * dy);  // no overflow at table sizes
+  const double nx = dx / sigma, ny = dy / sigma;      // n, the line of centres
+  const double vx = vi.x - vj.x, vy = vi.y - vj.y;    // v_ij
+  const double vn = vx * nx + vy * ny;                // v_ij . n (< 0: approaching)
   // The relative change, and its part along n.
   const double qx = i.qx - j.qx, qy = i.qy - j.qy;  // dq_ij
   const double px = i.px - j.px, py = i.py - j.py;  // dp_ij
