@@ -327,7 +327,14 @@ TEST_SUITE("lyapunov") {
       CAPTURE(e.tangent.error);
       REQUIRE(!std::isnan(e.tangent.error));
       REQUIRE(!std::isnan(e.twins.error));
-      // Both along the same path: within the tangent value's own error.
+      // Both along the same path, so their difference is far smaller than
+      // either's statistical error (seen: 0.2 and 0.2 of it in the default
+      // scene and the crowd); their windows differ (the twins start 20
+      // samples later, from their own random direction), so agreement
+      // within one error of the tangent value is the fair demand. Both turn
+      // terms with the wrong sign (lesson 12) moved it by 1.7 errors in the
+      // default scene (few collisions of two balls), 20 in the crowd and
+      // about 40 in the dense gas.
       CHECK(std::fabs(e.twins.value - e.tangent.value) < e.tangent.error);
     }
   }
