@@ -332,9 +332,9 @@ TEST_SUITE("lyapunov") {
       // scene and the crowd); their windows differ (the twins start 20
       // samples later, from their own random direction), so agreement
       // within one error of the tangent value is the fair demand. Both turn
-      // terms with the wrong sign (lesson 12) moved it by 1.7 errors in the
-      // default scene (few collisions of two balls), 20 in the crowd and
-      // about 40 in the dense gas.
+      // terms with the wrong sign (lesson 12) moved it by 2.0 of its errors
+      // in the default scene (few collisions of two balls), 23 in the crowd
+      // and 49 in the dense gas.
       CHECK(std::fabs(e.twins.value - e.tangent.value) < e.tangent.error);
     }
   }
