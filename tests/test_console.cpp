@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "beyond/kinetic_screen.hpp"
+#include "beyond/lyapunov_screen.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
@@ -573,7 +574,7 @@ TEST_SUITE("console") {
 
       const std::vector<std::string> csv_lines = lines_of(read_file(csv));
       REQUIRE(csv_lines.size() >= 1);
-      CHECK(csv_lines[0] == gas::csv_header());
+      CHECK(csv_lines[0] == gas::csv_header() + gas::lyapunov_csv_header());
       CHECK(csv_lines.size() - 1 == frames.size());
       for (std::size_t i = 1; i < csv_lines.size(); ++i) {
         CHECK(std::count(csv_lines[i].begin(), csv_lines[i].end(), ',') ==

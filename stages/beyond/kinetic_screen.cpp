@@ -139,7 +139,8 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
 // [/anchor: draw-histogram]
 
 // [anchor: draw-kinetic-figures]
-void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k) {
+void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k,
+                          const std::vector<std::string>& more_lines) {
   const KineticTheory& t = k.theory;
   const MeasuredFigures& m = k.measured;
   // Each measured figure, its average since the averages started with its
@@ -157,7 +158,7 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
   // Z - Z_theory with its error, combined sample by sample (gas_statistics).
   const std::string z_difference =
       k.many_balls ? fmt::format("Z - reference {}", shown(m.bulk_z_minus_theory)) : "";
-  const std::vector<std::string> lines = {
+  std::vector<std::string> lines = {
       fmt::format("T {:.6f}  T0 {:g}  collisions {} (walls {}, balls {})", f.time,
                   f.display_step, f.wall_collisions + f.ball_collisions,
                   f.wall_collisions, f.ball_collisions),
@@ -205,6 +206,13 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       bulk("mean free path", m.mean_free_path, k.mean_free_path_theory,
            "Enskog (inside)"),
   };
+  // Other observers' lines after them, as many as leave the histogram its
+  // room: a blank row, a title, two rows of bars, the axis, and the border.
+  const auto room = static_cast<std::size_t>(
+      std::max(0, screen.rows - 7 - static_cast<int>(lines.size())));
+  lines.insert(lines.end(), more_lines.begin(),
+               more_lines.begin() +
+                   static_cast<std::ptrdiff_t>(std::min(room, more_lines.size())));
   draw_figures(screen, lines);  // stage 6: the lines at their places
   // Below them, after a blank row, the histogram, if there is room for it.
   const int count = static_cast<int>(lines.size());

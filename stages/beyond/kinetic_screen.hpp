@@ -49,9 +49,12 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics);
 
 // The statistics screen: the figures at fixed places inside the border, each
 // beside its prediction, and under them the histogram of speeds with the
-// Maxwell-Boltzmann curve, as far as the screen has room.
+// Maxwell-Boltzmann curve, as far as the screen has room. `more_lines`, from
+// other observers (the Lyapunov exponent, lesson 12), follow the figures as
+// far as they leave the histogram room (all of them from 26 rows up).
 void draw_kinetic_figures(TextScreen& screen, const Figures& figures,
-                          const KineticFigures& kinetic);
+                          const KineticFigures& kinetic,
+                          const std::vector<std::string>& more_lines = {});
 
 // The histogram part of it, in rows first_row ... last_row.
 void draw_histogram(TextScreen& screen, const KineticFigures& kinetic, int first_row,

@@ -11,6 +11,8 @@
 
 #include "beyond/display_steps.hpp"
 #include "beyond/kinetic_screen.hpp"
+#include "beyond/lyapunov_screen.hpp"
+#include "beyond/observer_list.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/key_source.hpp"
@@ -127,7 +129,10 @@ class ConsoleRun {
     // 7's one hook (`statistics_` is made in place and never moves).
     if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path) {
       statistics_.emplace(control_.gas, histogram_bins);
-      control_.observer = &*statistics_;
+      // The Lyapunov exponent beside them, on the same hook (lesson 12).
+      lyapunov_.emplace(control_.gas);
+      observers_.emplace(std::vector<CollisionObserver*>{&*statistics_, &*lyapunov_});
+      control_.observer = &*observers_;
     }
     // Drawn in place: the frame fits the window, and fits it again when it
     // changes size (resize()).
@@ -175,7 +180,10 @@ class ConsoleRun {
         const Figures figures = figures_of(control_);
         std::optional<KineticFigures> kinetic;  // worked out once, for both uses
         if (statistics_) kinetic = kinetic_figures(control_.gas, *statistics_);
-        if (kinetic && outputs_.writes_csv()) outputs_.write_csv(figures, *kinetic);
+        if (kinetic && outputs_.writes_csv()) {
+          outputs_.write_csv(figures, *kinetic,
+                             lyapunov_csv_row(lyapunov_->measured(control_.gas)));
+        }
         if (options_.drawn) {
           show(figures, kinetic ? &*kinetic : nullptr,
                rule_ == PictureRule::every_collision && !step.collisions.empty());
@@ -219,7 +227,10 @@ class ConsoleRun {
   // article's keys, A restarts the statistics' averages (lesson 11).
   bool press_all(const std::string& keys) {
     for (const char key : keys) {
-      if ((key == 'A' || key == 'a') && statistics_) statistics_->restart(control_.gas);
+      if ((key == 'A' || key == 'a') && statistics_) {
+        statistics_->restart(control_.gas);
+        lyapunov_->restart();
+      }
       const KeyEffect effect = press_key(control_, key);
       if (effect == KeyEffect::end) return false;
       if (effect == KeyEffect::redraw) prepare_again();
@@ -278,7 +289,8 @@ class ConsoleRun {
       case ScreenMode::stats:
         draw_kinetic_figures(
             screen_, figures,
-            kinetic ? *kinetic : kinetic_figures(control_.gas, *statistics_));
+            kinetic ? *kinetic : kinetic_figures(control_.gas, *statistics_),
+            lyapunov_lines(control_.gas, lyapunov_->measured(control_.gas)));
         break;
     }
     display_.show(screen_, status_line(figures, options_.mode, control_.stopped), tone);
@@ -294,7 +306,9 @@ class ConsoleRun {
   GridSize grid_;
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
-  std::optional<GasStatistics> statistics_;  // for --mode stats and --csv only
+  std::optional<GasStatistics> statistics_;   // for --mode stats and --csv only
+  std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 12)
+  std::optional<ObserverList> observers_;     // both on stage 7's hook
   TextScreen screen_;
 };
 

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "beyond/lyapunov_screen.hpp"
 #include "stage2_input.hpp"
 
 namespace gas {
@@ -107,7 +108,7 @@ RunOutputs::RunOutputs(const Options& options, Display& display)
     std::remove(probe.c_str());
   }
   events_.write("T,K,N1,N2\n");
-  if (csv_) csv_.write(csv_header() + "\n");
+  if (csv_) csv_.write(csv_header() + lyapunov_csv_header() + "\n");
 }
 
 void RunOutputs::record(const Step& step) {
@@ -123,8 +124,9 @@ void RunOutputs::record(const Step& step) {
   if (bell_ && !step.collisions.empty()) ring_bell();
 }
 
-void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic) {
-  csv_.write(csv_row(figures, kinetic) + "\n");
+void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic,
+                           const std::string& more) {
+  csv_.write(csv_row(figures, kinetic) + more + "\n");
 }
 
 void RunOutputs::finish(const Gas& gas) {

@@ -81,8 +81,10 @@ class RunOutputs {
   // Is --csv written? (Its figures take a pass over every ball: the caller
   // works them out only then.)
   bool writes_csv() const { return static_cast<bool>(csv_); }
-  // After a display step: the figures to --csv, one row.
-  void write_csv(const Figures& figures, const KineticFigures& kinetic);
+  // After a display step: the figures to --csv, one row; `more`, the
+  // Lyapunov exponent's block (beyond/lyapunov_screen.hpp), at its end.
+  void write_csv(const Figures& figures, const KineticFigures& kinetic,
+                 const std::string& more);
 
   // At the end of the run, however it ends: --events and --csv closed on a
   // whole line, and --dump written whole, the gas at its time T (every

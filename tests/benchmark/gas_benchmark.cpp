@@ -8,9 +8,10 @@
 //      crossovers, and the default scene as the program runs it.
 //   2. The number type: float, double, long double against a 113-bit
 //      reference (cost, energy drift, overlaps, how long each follows the
-//      exact motion).
+//      exact motion), beside the horizon the Lyapunov exponent predicts.
 //   3. Time reversal: forward k collisions per ball, B, back as long: the
-//      return error against k, for each number type.
+//      return error against k, for each number type, and how far back the
+//      exponent predicts B to bring the gas.
 //   4. What an event-driven program buys: a fixed-time-step program at
 //      several steps against the stages.
 //   5. The program as users run it: build/gas itself, timed as a process on
@@ -52,6 +53,7 @@
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "engine.hpp"
+#include "lyapunov_horizon.hpp"
 #include "program/console.hpp"
 #include "program_runs.hpp"
 #include "reference_gas.hpp"
@@ -114,6 +116,9 @@ struct Sizes {
   int horizon_events = 0;             // section 2: events compared with the reference
   int distance_samples = 0;           // section 2: moments the distance is measured at
   std::vector<int> reversal_k;        // section 3: collisions per ball forward
+  std::vector<int> h_theorem_k;       // section 3: the same for the H-theorem scene
+  long long lyapunov_samples = 0;     // sections 2, 3: renormalisations of the exponent
+  int lyapunov_seeds = 0;             // section 2: independent gases for its error bar
   std::size_t stepped_balls = 0;      // section 4
   double stepped_end = 0;             // section 4: model time of each run
   std::vector<double> stepped_dt;     // section 4: steps, in diameters per mean speed
@@ -133,6 +138,9 @@ Sizes sizes_for(bool smoke) {
             .horizon_events = 300,
             .distance_samples = 10,
             .reversal_k = {1, 2},
+            .h_theorem_k = {5},
+            .lyapunov_samples = 100,
+            .lyapunov_seeds = 3,
             .stepped_balls = 100,
             .stepped_end = 5,
             .stepped_dt = {0.5, 0.1},
@@ -151,6 +159,9 @@ Sizes sizes_for(bool smoke) {
           .horizon_events = 6000,
           .distance_samples = 200,
           .reversal_k = {1, 2, 3, 5, 8, 12, 20, 30, 50},
+          .h_theorem_k = {5, 8, 10, 12, 15, 20},
+          .lyapunov_samples = 2000,
+          .lyapunov_seeds = 20,
           .stepped_balls = 2000,
           .stepped_end = 100,
           .stepped_dt = {0.5, 0.25, 0.1, 0.05, 0.02, 0.01},
@@ -181,6 +192,10 @@ Gas default_gas() {
 
 Gas crowd_gas() {
   return gas::read_scene_file(std::string(GAS_SOURCE_DIR) + "/data/crowd.scene");
+}
+
+Gas h_theorem_gas() {
+  return gas::read_scene_file(std::string(GAS_SOURCE_DIR) + "/data/h-theorem.scene");
 }
 
 // ------------------------------------------------------------ 1. throughput
@@ -723,6 +738,68 @@ int run(const Settings& settings) {
   progress("2/5 number types: float, double, long double against __float128");
   std::vector<TypeFigures> types;
   std::vector<DistanceRow> distance_rows;
+  // The Lyapunov exponent of each scene, and the horizons it predicts.
+  std::vector<gas::benchmark::ExponentFigures> exponents;
+  std::vector<gas::benchmark::Horizons> along;  // the same, along the run from T = 0
+  for (const auto& [name, gas] : {std::pair{std::string("default"), default_gas()},
+                                  std::pair{std::string("crowd"), crowd_gas()},
+                                  std::pair{std::string("h-theorem"), h_theorem_gas()}}) {
+    progress("  {}: the Lyapunov exponent, {} renormalisations", name,
+             sizes.lyapunov_samples);
+    exponents.push_back(
+        gas::benchmark::measure_exponent(name, gas, sizes.lyapunov_samples));
+    along.push_back(gas::benchmark::horizons_along_the_run(gas, 60));
+  }
+  // The exponent's error bar against independent gases: crowds of 48 random
+  // balls (the crowd's table, radius and speeds), one seed each; the spread
+  // of (lambda_s - their mean) / error_s should be about 1. Each seed has its
+  // own energy, and lambda scales with the speeds (the same paths, run c
+  // times as fast, have c times the exponent): lambda / v_rms is compared.
+  std::vector<gas::benchmark::ExponentFigures> seeds;
+  for (int seed = 1; seed <= sizes.lyapunov_seeds; ++seed) {
+    const Gas crowd_like = gas::parse_scene(
+        fmt::format("a 4\nT0 1\nA1 256\nA2 192\nrandom 48 {} 1.5\n", seed), "crowd-like");
+    seeds.push_back(gas::benchmark::measure_exponent(fmt::format("seed {}", seed),
+                                                     crowd_like, sizes.lyapunov_samples));
+    const double rms_speed = std::sqrt(2 * gas::kinetic_energy(crowd_like) /
+                                       static_cast<double>(crowd_like.balls.size()));
+    seeds.back().per_time /= rms_speed;
+    seeds.back().per_time_error /= rms_speed;
+  }
+  double seeds_mean = 0, seeds_spread = 0;
+  {
+    int known = 0;
+    for (const auto& e : seeds)
+      seeds_mean += e.per_time / static_cast<double>(seeds.size());
+    for (const auto& e : seeds) {
+      if (std::isnan(e.per_time_error)) continue;
+      const double z = (e.per_time - seeds_mean) / e.per_time_error;
+      seeds_spread += z * z;
+      ++known;
+    }
+    // The mean of the seeds is one of the terms: (n - 1) / n of the variance.
+    seeds_spread =
+        known > 1 ? std::sqrt(seeds_spread / known * static_cast<double>(seeds.size()) /
+                              static_cast<double>(seeds.size() - 1))
+                  : std::numeric_limits<double>::quiet_NaN();
+    progress("  the exponent's error bar over {} seeds: spread {:.2f}", seeds.size(),
+             seeds_spread);
+  }
+  {
+    Csv csv(settings.out / "lyapunov.csv",
+            "scene,lyapunov,lyapunov_error,per_collision_per_ball,"
+            "per_collision_per_ball_error,samples,predicted_float,predicted_double,"
+            "predicted_long_double,along_run_float,along_run_double,"
+            "along_run_long_double");
+    for (std::size_t i = 0; i < exponents.size(); ++i) {
+      const auto& e = exponents[i];
+      csv.row(
+          "{},{:.6g},{:.3g},{:.6g},{:.3g},{},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g},{:.4g}",
+          e.scene, e.per_time, e.per_time_error, e.per_ball, e.per_ball_error, e.samples,
+          e.single, e.twice, e.extended, along[i].single, along[i].twice,
+          along[i].extended);
+    }
+  }
   {
     const Gas seven = default_gas(), crowd = crowd_gas();
     for (const auto& [name, gas, drift] :
@@ -804,6 +881,12 @@ int run(const Settings& settings) {
           reversal.push_back(reverse_reference<__float128>(name, gas, k));
         reversal.push_back(reverse_stages(name, gas, k));
       }
+    }
+    // The H-theorem scene: 1024 balls, the stages only (the reference kernel
+    // is O(N^2) a collision).
+    for (const int k : sizes.h_theorem_k) {
+      progress("  h-theorem: k = {}", k);
+      reversal.push_back(reverse_stages("h-theorem", h_theorem_gas(), k));
     }
     for (const ReversalRow& r : reversal)
       csv.row("{},{},{},{:.6g},{:.4g}", r.scene, r.type, r.per_ball, r.time, r.error);
@@ -1047,6 +1130,54 @@ int run(const Settings& settings) {
       "two balls: each bit of mantissa buys a fixed number of collisions, so the "
       "trusted horizon grows in proportion to the bits, and no precision makes it "
       "infinite.\n\n");
+  // The horizon the Lyapunov exponent predicts, beside the one measured.
+  add("The factor is the largest Lyapunov exponent lambda (lesson 12), measured by "
+      "the stages with the tangent dynamics of `stages/beyond/lyapunov.hpp` "
+      "(renormalisations shown; `lyapunov.csv`). Collisions a ball are counted as "
+      "above: every collision of the gas (walls and pairs), over N. An error of one "
+      "unit in the last place of the coordinates, eps = 2^(floor(log2 max(A1, A2)) "
+      "− digits + 1), grows as e^(lambda t) and reaches a hundredth of a radius after "
+      "ln(a / (100 eps)) / lambda: the *predicted* trusted horizon, in collisions a "
+      "ball, beside the *measured* one of the table above. Two predictions: from "
+      "lambda, the average over a long run (what the statistics screen shows), and "
+      "*along the run*: from the growth of one change followed from T = 0 along "
+      "this very stretch of the motion, which a start far from equilibrium or the "
+      "short stretch of a few balls makes differ from the average.\n\n");
+  add("| scene | lambda per unit time | per collision a ball | renormalisations | float: "
+      "predicted / along the run / measured | double | long double "
+      "|\n|---|---:|---:|---:|---:|---:|---:|\n");
+  auto measured_trusted = [&](const std::string& scene, const char* type) {
+    for (const TypeFigures& f : types)
+      if (f.scene == scene && f.type == type && f.trusted_per_ball >= 0)
+        return fmt::format("{:.1f}", f.trusted_per_ball);
+    return std::string(scene == "h-theorem" ? "not run" : "beyond the run");
+  };
+  auto with_error = [](double value, double error, const char* format) {
+    const std::string shown = fmt::format(fmt::runtime(format), value);
+    return std::isnan(error) ? shown + " (error not known)"
+                             : shown + fmt::format(" ± {:.2g}", error);
+  };
+  for (std::size_t i = 0; i < exponents.size(); ++i) {
+    const auto& e = exponents[i];
+    add(fmt::format(
+        "| {} | {} | {} | {} | {:.1f} / {:.1f} / {} | {:.1f} / {:.1f} / {} | "
+        "{:.1f} / {:.1f} / {} |\n",
+        e.scene, with_error(e.per_time, e.per_time_error, "{:.4g}"),
+        with_error(e.per_ball, e.per_ball_error, "{:.3g}"), e.samples, e.single,
+        along[i].single, measured_trusted(e.scene, "float"), e.twice, along[i].twice,
+        measured_trusted(e.scene, "double"), e.extended, along[i].extended,
+        measured_trusted(e.scene, "long double")));
+  }
+  add("\n(The H-theorem scene's 1024 balls are not run against the 113-bit kernel, "
+      "whose every collision costs O(N²); section 3 measures its horizon by B.)\n\n");
+  add(fmt::format(
+      "The exponent's error bar, checked on {} independent gases like the crowd (48 "
+      "random balls of radius 4 on the 256 × 192 table, `random 48 SEED 1.5`, "
+      "SEED = 1 … {}, {} renormalisations each; each seed's lambda divided by its rms "
+      "speed, which differs from seed to seed): lambda / v_rms {:.4g} per unit length "
+      "on average, and the spread of (lambda_s − mean) / error_s is {:.2f} (1 for "
+      "honest error bars; the mean's own share taken out).\n\n",
+      seeds.size(), seeds.size(), sizes.lyapunov_samples, seeds_mean, seeds_spread));
 
   // 3.
   add("## 3. Time reversal\n\n");
@@ -1072,8 +1203,39 @@ int run(const Settings& settings) {
     }
     add("\n");
   }
+  add("Scene `h-theorem` (1024 balls; the stages only, the reference kernel being "
+      "O(N²) a collision):\n\n| k per ball | stages (double) |\n|---:|---:|\n");
+  for (const ReversalRow& r : reversal)
+    if (r.scene == "h-theorem")
+      add(fmt::format("| {} | {:.2g} |\n", r.per_ball, r.error));
+  add("\n");
   add("An error that grows to the size of the table means the gas did not come back: "
       "the reversed run parted from the forward one somewhere on the way.\n\n");
+  // How far back B brings the gas: predicted by the exponent, and measured.
+  add("How far back B brings the gas, predicted and measured. The return error is "
+      "that of the forward run at the turn, made when B is pressed, and grown "
+      "again on the way back, e^(lambda t) eps: the prediction is the trusted "
+      "horizon of section 2, ln(a / (100 eps)) / lambda collisions a ball for the "
+      "stages' double (k counts collisions as section 2 does: every collision of the "
+      "gas over N; lesson 11 counts a collision of two balls for both, about twice "
+      "as many in the H-theorem scene). Measured: the largest k of the tables whose "
+      "return error (stages, double) is below a hundredth of a radius, and the next "
+      "k tried.\n\n"
+      "| scene | predicted (double) | along the run | measured: back from | not from |\n"
+      "|---|---:|---:|---:|---:|\n");
+  for (std::size_t i = 0; i < exponents.size(); ++i) {
+    const auto& e = exponents[i];
+    int back = 0, not_back = 0;
+    for (const ReversalRow& r : reversal) {
+      if (r.scene != e.scene || r.type != "stages (double)") continue;
+      if (r.error < 0.01 && not_back == 0) back = r.per_ball;
+      if (r.error >= 0.01 && not_back == 0) not_back = r.per_ball;
+    }
+    add(fmt::format("| {} | {:.1f} | {:.1f} | {} | {} |\n", e.scene, e.twice,
+                    along[i].twice, back > 0 ? fmt::format("{}", back) : "—",
+                    not_back > 0 ? fmt::format("{}", not_back) : "—"));
+  }
+  add("\n");
 
   // 4.
   const double pressure_scale =
