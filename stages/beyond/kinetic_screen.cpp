@@ -24,6 +24,8 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) 
   k.bulk_z_theory = hard_disc_fluid_compressibility(eta);
   k.bulk_z_henderson = henderson_compressibility(eta);
   k.pair_contact_theory = hard_disc_fluid_contact_value(eta);
+  k.pair_contact_theory_error =
+      std::abs(hard_disc_fluid_contact_value_slope(eta)) * m.interior_area_fraction.error;
   const double interior_density = eta / (std::numbers::pi * gas.radius * gas.radius);
   k.pressure_theory = k.bulk_z_theory * interior_density * k.theory.kT;
   k.mean_free_path = m.collision_rate.value > 0
@@ -168,7 +170,7 @@ std::string csv_header() {
          "Z_box_walls,Z_box_walls_error,Z_box_virial,Z_box_virial_error,"
          "collision_rate,collision_rate_error,collision_rate_theory,"
          "mean_free_path,mean_free_path_theory,H,averages_since,"
-         "g_contact,g_contact_error,g_contact_theory,"
+         "g_contact,g_contact_error,g_contact_theory,g_contact_theory_error,"
          "wall_contact_pressure,wall_contact_pressure_error,"
          "wall_middle_pressure,wall_middle_pressure_error";
 }
@@ -207,6 +209,7 @@ std::string csv_row(const Figures& f, const KineticFigures& k) {
   add(m.since);
   add_average(m.pair_contact);
   add(k.pair_contact_theory);
+  add(k.pair_contact_theory_error);
   add_average(m.wall_contact_pressure);
   add_average(m.wall_middle_pressure);
   return fmt::to_string(row);

@@ -37,6 +37,8 @@ struct KineticFigures {
   double pressure_theory = not_known;   // the reference Z n_int kT: the bulk's pressure
   double pair_contact_theory = not_known;  // the reference g(2a) at the interior's eta
   double mean_free_path = not_known;       // average mean speed / collision rate
+  // The reference g(2a)'s uncertainty, from eta's: |dg/deta| x eta's error.
+  double pair_contact_theory_error = not_known;
 };
 
 // The predictions for `gas` and what `statistics` measured, at the gas's T.

@@ -119,10 +119,13 @@ class ConsoleRun {
         outputs_(options, display_),
         screen_(prepare()) {
     // Kinetic theory only for a run that shows or writes its figures: the
-    // statistics screen or --csv. It hears of each collision through stage
-    // 7's one hook (`statistics_` is made in place and never moves).
-    if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path) {
-      statistics_.emplace(control_.gas, histogram_bins(grid_.columns));
+    // statistics screen, --csv or --structure. It hears of each collision
+    // through stage 7's one hook (`statistics_` is made in place and never
+    // moves).
+    if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path ||
+        options.structure_path) {
+      statistics_.emplace(control_.gas, histogram_bins(grid_.columns), true,
+                          options.structure_path.has_value());
       control_.observer = &*statistics_;
     }
     // Drawn in place: the frame fits the window, and fits it again when it
@@ -181,7 +184,7 @@ class ConsoleRun {
     }
     // However the run ends: the terminal put back, the files closed whole.
     display_.finish();
-    outputs_.finish(control_.gas);
+    outputs_.finish(control_.gas, statistics_ ? &*statistics_ : nullptr);
     return ending();
   }
 
@@ -290,7 +293,7 @@ class ConsoleRun {
   GridSize grid_;
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
-  std::optional<GasStatistics> statistics_;  // for --mode stats and --csv only
+  std::optional<GasStatistics> statistics_;  // for --mode stats, --csv, --structure
   TextScreen screen_;
 };
 

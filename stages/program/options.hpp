@@ -42,6 +42,8 @@ struct Options {
   bool help = false;                       // --help
   std::optional<Strategy> strategy;        // --strategy; none: chosen by N
   std::optional<PictureRule> pictures;     // --pictures; none: chosen by N
+  // --structure FILE
+  std::optional<std::string> structure_path;
 };
 
 // Reads the arguments after the program's name. Throws UsageError.
