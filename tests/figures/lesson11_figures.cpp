@@ -120,6 +120,26 @@ std::vector<std::string> averaged_run(const fs::path& scene, double until, int s
           std::string(static_cast<std::size_t>(steps / 4), '.') + "A"};
 }
 
+// The runs of 1024-ball lattice scenes at each area fraction, about
+// `collisions` collisions of two balls each in 400 display steps, averaged
+// from a quarter of the run, each writing --csv work/NAME-ETA.csv.
+std::vector<Job> lattice_runs(const std::vector<double>& fractions,
+                              const std::string& name, double collisions,
+                              const fs::path& work) {
+  std::vector<Job> jobs;
+  for (const double eta : fractions) {
+    const fs::path scene = work / fmt::format("{}-{}.scene", name, eta);
+    const double until = time_for(eta, collisions);
+    write_lattice_scene(scene, eta, until / 400);
+    Job job(averaged_run(scene, until, 400));
+    job.arguments.insert(
+        job.arguments.end(),
+        {"--csv", (work / fmt::format("{}-{}.csv", name, eta)).string()});
+    jobs.push_back(job);
+  }
+  return jobs;
+}
+
 // The last row of a --csv file, by column name.
 std::map<std::string, double> last_row(const fs::path& path) {
   std::ifstream in(path);
@@ -176,17 +196,7 @@ const std::vector<double> eos_fractions = {0.05, 0.1,  0.15, 0.2,  0.25, 0.3,  0
 
 void equation_of_state(const fs::path& out, const fs::path& work, double scale,
                        bool smoke) {
-  std::vector<Job> jobs;
-  for (const double eta : eos_fractions) {
-    const fs::path scene = work / fmt::format("eos-{}.scene", eta);
-    // About 1.5 million collisions of two balls, in 400 display steps.
-    const double until = time_for(eta, 1.5e6 * scale);
-    write_lattice_scene(scene, eta, until / 400);
-    Job job(averaged_run(scene, until, 400));
-    job.arguments.insert(job.arguments.end(),
-                         {"--csv", (work / fmt::format("eos-{}.csv", eta)).string()});
-    jobs.push_back(job);
-  }
+  std::vector<Job> jobs = lattice_runs(eos_fractions, "eos", 1.5e6 * scale, work);
   run_all(jobs);
   std::ofstream table(out / "eos.csv");
   table << "eta_nominal,eta_interior,Z,Z_error,Z_kolafa_rottner,Z_henderson,"
@@ -347,18 +357,13 @@ void speeds(const fs::path& out, const fs::path& work, double scale, bool smoke)
 const std::vector<double> structure_fractions = {0.1, 0.3, 0.5, 0.65};
 
 void structure(const fs::path& out, const fs::path& work, double scale, bool smoke) {
-  std::vector<Job> jobs;
-  for (const double eta : structure_fractions) {
-    const fs::path scene = work / fmt::format("structure-{}.scene", eta);
-    const double until = time_for(eta, 2e6 * scale);
-    write_lattice_scene(scene, eta, until / 400);
-    Job job(averaged_run(scene, until, 400));
-    job.arguments.insert(
-        job.arguments.end(),
-        {"--csv", (work / fmt::format("structure-{}.csv", eta)).string(), "--structure",
-         (out / fmt::format("structure-{}.csv", eta)).string()});
-    jobs.push_back(job);
-  }
+  std::vector<Job> jobs =
+      lattice_runs(structure_fractions, "structure", 2e6 * scale, work);
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    jobs[i].arguments.insert(
+        jobs[i].arguments.end(),
+        {"--structure",
+         (out / fmt::format("structure-{}.csv", structure_fractions[i])).string()});
   run_all(jobs);
   std::ofstream table(out / "structure-contact.csv");
   table << "eta_nominal,eta_interior,g_contact,g_contact_error,g_contact_theory,"
