@@ -23,7 +23,7 @@
 // Usage:  gas-figures [--out DIR] [--smoke]
 //   --out     where to write (default: data/reports/lesson-11 of the source tree)
 //   --smoke   runs a hundred times shorter, no pictures (the test suite runs this)
-// About 2 processor-minutes; progress on standard error. Beyond the article.
+// About a processor-minute; progress on standard error. Beyond the article.
 // Lesson: lessons/11-kinetic-theory.md ("Lesson 11 in pictures").
 #include <fmt/format.h>
 #include <fmt/ranges.h>
