@@ -183,6 +183,19 @@ TEST_SUITE("kinetic-theory") {
             doctest::Approx(difference).epsilon(1e-7));
     }
     CHECK(gas::hard_disc_fluid_compressibility_slope(0) == doctest::Approx(2));
+    // The contact value's slope (g_contact_theory_error = |slope| x eta's
+    // error) against a central difference of g, as above; at 0 the limit b3 / 2.
+    for (double eta : {0.05, 0.3, 0.5, 0.69}) {
+      const double h = 1e-6;
+      const double difference = (gas::hard_disc_fluid_contact_value(eta + h) -
+                                 gas::hard_disc_fluid_contact_value(eta - h)) /
+                                (2 * h);
+      CHECK(gas::hard_disc_fluid_contact_value_slope(eta) ==
+            doctest::Approx(difference).epsilon(1e-7));
+    }
+    CHECK(gas::hard_disc_fluid_contact_value_slope(0) ==
+          doctest::Approx(b3_exact / 2).epsilon(1e-8));
+    CHECK(std::isnan(gas::hard_disc_fluid_contact_value_slope(0.75)));
     // No fluid reference outside 0 ... 0.70.
     CHECK(std::isnan(gas::hard_disc_fluid_compressibility(0.71)));
     CHECK(std::isnan(gas::hard_disc_fluid_compressibility(-0.1)));

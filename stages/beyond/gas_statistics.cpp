@@ -58,7 +58,8 @@ GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
           interior_collisions - earlier.interior_collisions};
 }
 
-GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up)
+GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
+                             bool structure_curves)
     : balls_(gas.balls.size()),
       radius_(gas.radius),
       width_(gas.width - 2 * gas.radius),
@@ -69,6 +70,7 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up)
   // The interior: centres at least interior_margin_radii from every wall.
   const double margin = interior_margin_radii * gas.radius;
   interior_ = {margin, gas.width - margin, margin, gas.height - margin};
+  structure_ = FluidStructure(gas, interior_, structure_curves);
   const int count = std::max(bins, 1);
   bin_width_ = histogram_range * std::sqrt(2 * kT_) / count;
   // One entry per bin and one for the speeds beyond the last.
@@ -145,8 +147,10 @@ void GasStatistics::add_interior_flight(Sums& s, const Ball& ball, double until)
 
 // [anchor: collision-sums]
 void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
-  // The sums up to TC, with the speeds held until then.
+  // The structure's snapshots due before TC, while the flights still reach them.
   const double t = c.time;
+  if (averaging_) structure_.catch_up(gas, t);
+  // The sums up to TC, with the speeds held until then.
   sums_.duration += t - last_time_;
   sums_.speed_time += speed_sum_ * (t - last_time_);
   last_time_ = t;
@@ -214,12 +218,6 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
     const double value = value_of(static_cast<Quantity>(q), sample);
     if (std::isfinite(value)) blocking_[static_cast<std::size_t>(q)].add(value);
   }
-  // The structure at this moment.
-  const ContactSnapshot snapshot = contact_snapshot(gas, c.time, interior_);
-  if (std::isfinite(snapshot.pair_contact))
-    snapshot_blocking_[pair_contact_q].add(snapshot.pair_contact);
-  if (std::isfinite(snapshot.wall_contact_density))
-    snapshot_blocking_[wall_contact_q].add(kT_ * snapshot.wall_contact_density);
 }
 // [/anchor: collision-sums]
 
@@ -234,7 +232,7 @@ void GasStatistics::start_averages(const Gas& gas) {
   sample_start_ = Sums{};
   sample_collisions_ = 0;
   for (BlockingAnalysis& b : blocking_) b.clear();
-  for (BlockingAnalysis& b : snapshot_blocking_) b.clear();
+  structure_.restart(start_);
 }
 
 void GasStatistics::restart(const Gas& gas) {
@@ -242,6 +240,7 @@ void GasStatistics::restart(const Gas& gas) {
 }
 
 void GasStatistics::before_rows_rewritten(const Gas& gas) {
+  if (averaging_) structure_.catch_up(gas, gas.time);
   for (const Ball& ball : gas.balls) add_interior_flight(sums_, ball, gas.time);
 }
 
@@ -368,10 +367,10 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
     average.error = blocking_[static_cast<std::size_t>(q)].error();
   }
   // The snapshots' averages.
-  const auto& pair = snapshot_blocking_[pair_contact_q];
-  const auto& wall = snapshot_blocking_[wall_contact_q];
+  const BlockingAnalysis& pair = structure_.pair_contact();
+  const BlockingAnalysis& wall = structure_.wall_contact_density();
   m.pair_contact = {pair.mean(), pair.error()};
-  m.wall_contact_pressure = {wall.mean(), wall.error()};
+  m.wall_contact_pressure = {kT_ * wall.mean(), kT_ * wall.error()};
   // The histogram: the ball-time fraction of each bin, to now.
   const double ball_time = s.duration * static_cast<double>(balls_);
   for (std::size_t b = 0; b < bin_count_.size(); ++b) {

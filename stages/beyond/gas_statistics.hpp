@@ -94,8 +94,11 @@ class GasStatistics final : public CollisionObserver {
   // Speeds are counted in `bins` equal bins from 0 to 2.5 v_rms (v_rms of the
   // gas as it is now; the energy does not change); faster ones apart. The
   // averages start after warm_up_collisions_a_ball(gas) collisions of two
-  // balls per ball from now (`warm_up` false: at once).
-  GasStatistics(const Gas& gas, int bins, bool warm_up = true);
+  // balls per ball from now (`warm_up` false: at once). `structure_curves`:
+  // keep the whole g(r) and wall profile too (--structure;
+  // beyond/fluid_structure.hpp).
+  GasStatistics(const Gas& gas, int bins, bool warm_up = true,
+                bool structure_curves = false);
 
   // Stage 7's hook: before a collision the sums are brought up to TC and the
   // colliding balls' old speeds and flights taken out; after it their new
@@ -113,6 +116,9 @@ class GasStatistics final : public CollisionObserver {
 
   // The figures at the gas's time T (walks the balls once).
   MeasuredFigures measured(const Gas& gas) const;
+
+  // The structure's snapshots and curves (beyond/fluid_structure.hpp).
+  const FluidStructure& structure() const { return structure_; }
 
   int bins() const { return static_cast<int>(bin_count_.size()) - 1; }
   std::size_t balls() const { return balls_; }
@@ -155,8 +161,6 @@ class GasStatistics final : public CollisionObserver {
     wall_middle_pressure_q,
     quantity_count
   };
-  // The quantities measured on snapshots (beyond/fluid_structure.hpp).
-  enum SnapshotQuantity { pair_contact_q, wall_contact_q, snapshot_quantity_count };
   double value_of(Quantity q, const Sums& s) const;
   static Average& average_of(MeasuredFigures& m, Quantity q);
 
@@ -197,8 +201,8 @@ class GasStatistics final : public CollisionObserver {
   Sums sample_start_;
   long long sample_collisions_ = 0;
   std::array<BlockingAnalysis, quantity_count> blocking_;
-  // And a snapshot of the structure at the end of each sample.
-  std::array<BlockingAnalysis, snapshot_quantity_count> snapshot_blocking_;
+  // And the structure, from snapshots at fixed moments of time.
+  FluidStructure structure_;
 };
 
 }  // namespace gas

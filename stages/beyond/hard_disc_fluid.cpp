@@ -109,6 +109,18 @@ double hard_disc_fluid_contact_value(double area_fraction) {
   return (hard_disc_fluid_compressibility(area_fraction) - 1) / (2 * area_fraction);
 }
 
+double hard_disc_fluid_contact_value_slope(double area_fraction) {
+  if (!in_fluid_range(area_fraction)) return unknown;
+  const double eta = area_fraction;
+  // At eta = 0 the limit: Z = 1 + C_1 x + C_2 x^2 + ... with x = eta + eta^2
+  // + ..., so Z = 1 + 2 eta + (C_1 + C_2) eta^2 + ... and g = 1 + (C_1 +
+  // C_2) eta / 2 + ...
+  if (eta == 0)
+    return (kolafa_rottner[1].coefficient + kolafa_rottner[2].coefficient) / 2;
+  return hard_disc_fluid_compressibility_slope(eta) / (2 * eta) -
+         (hard_disc_fluid_compressibility(eta) - 1) / (2 * eta * eta);
+}
+
 double henderson_relative_error(double area_fraction) {
   if (!in_fluid_range(area_fraction)) return unknown;
   const double eta = area_fraction;

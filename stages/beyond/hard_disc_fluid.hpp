@@ -60,6 +60,11 @@ double hard_disc_fluid_compressibility_slope(double area_fraction);
 // collision rate needs. At eta = 0 it is 1 (the limit); NaN outside 0...0.70.
 double hard_disc_fluid_contact_value(double area_fraction);
 
+// dg(2a)/deta of the same: Z' / (2 eta) - (Z - 1) / (2 eta^2), with the
+// theory's uncertainty |dg/deta| x (eta's error) when eta is measured. At
+// eta = 0 the limit, dZ/deta's series: b3 / 2 = 1.564; NaN outside 0...0.70.
+double hard_disc_fluid_contact_value_slope(double area_fraction);
+
 // Henderson's Z = (1 + eta^2 / 8) / (1 - eta)^2 against the reference:
 // Z_Henderson / Z_reference - 1 (a fraction: 0.022 is 2.2 % too high). NaN
 // outside 0 <= eta <= 0.70. At 0.5 it is +0.45 %, at 0.65 +2.2 %, at 0.69

@@ -54,6 +54,9 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) 
   k.collision_rate_theory = {rate, rate_error};
   const double path = enskog_mean_free_path(eta, a);
   k.mean_free_path_theory = {path, path * rate_error / rate};
+  // The reference g(2a)'s uncertainty, from eta's: |dg/deta| x eta's error.
+  k.pair_contact_theory_error =
+      std::abs(hard_disc_fluid_contact_value_slope(eta)) * eta_error;
   return k;
 }
 // [/anchor: kinetic-figures]
@@ -334,6 +337,7 @@ constexpr Column columns[] = {
     {"g_contact", measured_value<&M::pair_contact>},
     {"g_contact_error", measured_error<&M::pair_contact>},
     {"g_contact_theory", kinetic_value<&K::pair_contact_theory>},
+    {"g_contact_theory_error", kinetic_value<&K::pair_contact_theory_error>},
     {"wall_contact_pressure", measured_value<&M::wall_contact_pressure>},
     {"wall_contact_pressure_error", measured_error<&M::wall_contact_pressure>},
 };

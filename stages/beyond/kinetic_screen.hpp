@@ -43,6 +43,8 @@ struct KineticFigures {
   Average mean_free_path_theory;           // Enskog's at eta_int
   double h_noise = not_known;         // the mean H of N Maxwellian speeds in the bins
   double h_noise_spread = not_known;  // its standard deviation
+  // The reference g(2a)'s uncertainty, from eta's: |dg/deta| x eta's error.
+  double pair_contact_theory_error = not_known;
 };
 // The predictions for `gas` and what `statistics` measured, at the gas's T.
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics);

@@ -125,10 +125,13 @@ class ConsoleRun {
         outputs_(options, display_),
         screen_(prepare()) {
     // Kinetic theory only for a run that shows or writes its figures: the
-    // statistics screen or --csv. It hears of each collision through stage
-    // 7's one hook (`statistics_` is made in place and never moves).
-    if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path) {
-      statistics_.emplace(control_.gas, histogram_bins);
+    // statistics screen, --csv or --structure. It hears of each collision
+    // through stage 7's one hook (`statistics_` is made in place and never
+    // moves).
+    if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path ||
+        options.structure_path) {
+      statistics_.emplace(control_.gas, histogram_bins, true,
+                          options.structure_path.has_value());
       // The Lyapunov exponent beside them, on the same hook (lesson 12).
       lyapunov_.emplace(control_.gas);
       observers_.emplace(std::vector<CollisionObserver*>{&*statistics_, &*lyapunov_});
@@ -193,7 +196,7 @@ class ConsoleRun {
     }
     // However the run ends: the terminal put back, the files closed whole.
     display_.finish();
-    outputs_.finish(control_.gas);
+    outputs_.finish(control_.gas, statistics_ ? &*statistics_ : nullptr);
     return ending();
   }
 
@@ -306,7 +309,7 @@ class ConsoleRun {
   GridSize grid_;
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
-  std::optional<GasStatistics> statistics_;   // for --mode stats and --csv only
+  std::optional<GasStatistics> statistics_;   // for --mode stats, --csv, --structure
   std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 12)
   std::optional<ObserverList> observers_;     // both on stage 7's hook
   TextScreen screen_;

@@ -175,6 +175,7 @@ constexpr KnownOption known_options[] = {
     {"--events", read_text<&Options::events_path>},
     {"--dump", read_text<&Options::dump_path>},
     {"--csv", read_text<&Options::csv_path>},
+    {"--structure", read_text<&Options::structure_path>},
     {"--cols", read_screen_size<&Options::columns, smallest_columns>},
     // The screen's rows and two more: the status line, and the cursor below.
     {"--rows", read_screen_size<&Options::rows, smallest_rows + 2>},
@@ -231,6 +232,7 @@ std::string help_text() {
 
 usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
            [--mode balls|trails|stats|none] [--events FILE] [--dump FILE] [--csv FILE]
+           [--structure FILE]
            [--cols N] [--rows N] [--step] [--trace] [--bell]
            [--strategy scan|table|grid] [--pictures collisions|steps]
        gas --help | --version
@@ -251,6 +253,11 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
   --events FILE    write every collision to FILE as CSV: T,K,N1,N2
   --dump FILE      at exit, write the gas to FILE as a scene file
   --csv FILE       write the statistics of every picture to FILE as CSV
+  --structure FILE at exit, write the structure of the gas to FILE as CSV,
+                   averaged like the statistics: g(r) out to r = 5a among the
+                   balls of the interior, and the density of centres near the
+                   walls x = 0, A1; a line per bin 0.05a wide:
+                   curve,from,to,value,error (curve: pair or wall)
   --cols N         screen width in characters (default: the terminal's, else 80)
   --rows N         screen height in characters (default: the terminal's, else 24)
   --step           wait for Enter after every display step (a line may hold keys)

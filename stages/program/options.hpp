@@ -43,6 +43,8 @@ struct Options {
   bool version = false;                    // --version
   std::optional<Strategy> strategy;        // --strategy; none: chosen by N
   std::optional<PictureRule> pictures;     // --pictures; none: chosen by N
+  // --structure FILE
+  std::optional<std::string> structure_path;
 };
 
 // Reads the arguments after the program's name. Throws UsageError.

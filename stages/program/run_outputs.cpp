@@ -95,15 +95,17 @@ RunOutputs::RunOutputs(const Options& options, Display& display)
     : events_(options.events_path),
       csv_(options.csv_path),
       dump_path_(options.dump_path),
+      structure_path_(options.structure_path),
       bell_(options.bell),
       display_(display) {
-  // A dump is written at the end; whether it can be is asked now, so that a
-  // bad path fails before the run, not after it.
-  if (dump_path_) {
+  // A dump and the structure are written at the end; whether they can be is
+  // asked now, so that a bad path fails before the run, not after it.
+  for (const auto* path : {&dump_path_, &structure_path_}) {
+    if (!*path) continue;
     std::string probe;
-    const int descriptor = new_file_beside(*dump_path_, probe);
+    const int descriptor = new_file_beside(**path, probe);
     if (descriptor < 0)
-      throw std::runtime_error(fmt::format("{}: cannot write this file", *dump_path_));
+      throw std::runtime_error(fmt::format("{}: cannot write this file", **path));
     ::close(descriptor);
     std::remove(probe.c_str());
   }
@@ -129,16 +131,20 @@ void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic
   csv_.write(csv_row(figures, kinetic) + more + "\n");
 }
 
-void RunOutputs::finish(const Gas& gas) {
+void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics) {
   events_.close();
   csv_.close();
   if (dump_path_) dump_failure_ = write_whole(*dump_path_, scene_text(gas));
+  if (structure_path_ && statistics)
+    structure_failure_ =
+        write_whole(*structure_path_, structure_csv(statistics->structure()));
 }
 
 std::optional<std::string> RunOutputs::failure() const {
   if (events_.failure()) return events_.failure();
   if (csv_.failure()) return csv_.failure();
-  return dump_failure_;
+  if (dump_failure_) return dump_failure_;
+  return structure_failure_;
 }
 
 std::vector<std::string> RunOutputs::written() const {
@@ -146,6 +152,7 @@ std::vector<std::string> RunOutputs::written() const {
   for (const OutputFile* file : {&events_, &csv_})
     if (*file) files.push_back(file->path());
   if (dump_path_) files.push_back(*dump_path_);
+  if (structure_path_) files.push_back(*structure_path_);
   return files;
 }
 

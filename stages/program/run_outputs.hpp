@@ -1,5 +1,5 @@
 // What a run leaves behind besides its frames: the --events and --csv files,
-// the --dump at the end, and the --bell on collisions.
+// the --dump and --structure at the end, and the --bell on collisions.
 //
 // Beyond the article: its program only drew (stage 6) and sounded a note at
 // each collision (stage 7's "sound"); these outputs let a run be studied
@@ -88,8 +88,9 @@ class RunOutputs {
 
   // At the end of the run, however it ends: --events and --csv closed on a
   // whole line, and --dump written whole, the gas at its time T (every
-  // collision up to T is in --events).
-  void finish(const Gas& gas);
+  // collision up to T is in --events); --structure written whole from the
+  // statistics (which a run that asks for it has).
+  void finish(const Gas& gas, const GasStatistics* statistics);
 
   // The first output that could not be written, "FILE: why", if any.
   std::optional<std::string> failure() const;
@@ -104,6 +105,8 @@ class RunOutputs {
   OutputFile csv_;                                     // --csv
   std::optional<std::string> dump_path_;               // --dump
   std::optional<std::string> dump_failure_;            // why --dump was not written
+  std::optional<std::string> structure_path_;          // --structure
+  std::optional<std::string> structure_failure_;       // why it was not written
   bool bell_ = false;                                  // --bell
   Display& display_;                                   // where the bell rings
   std::chrono::steady_clock::time_point last_bell_{};  // when it last rang

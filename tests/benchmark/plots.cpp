@@ -40,7 +40,7 @@ std::string axes(const Panel& panel) {
 
 std::string gnuplot_script(const Picture& picture) {
   std::string script = fmt::format(
-      "# Written by gas-benchmark (tests/benchmark/plots.cpp): {}\n"
+      "# Written by tests/benchmark/plots.cpp (gas-benchmark, gas-figures): {}\n"
       "set terminal svg size {},{} dynamic enhanced font \"sans,13\" "
       "background rgb \"white\"\n"
       "set output {}\n"
@@ -51,9 +51,14 @@ std::string gnuplot_script(const Picture& picture) {
     const Panel& panel = picture.panels[p];
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       script += fmt::format("$data_{}_{} << EOD\n", p, s);
-      for (const auto& point : panel.series[s].points)
-        if (shown(panel, point))
-          script += fmt::format("{:.9g} {:.9g}\n", point.first, point.second);
+      const Series& series = panel.series[s];
+      for (std::size_t i = 0; i < series.points.size(); ++i) {
+        const auto& point = series.points[i];
+        if (!shown(panel, point)) continue;
+        script += fmt::format("{:.9g} {:.9g}", point.first, point.second);
+        if (!series.errors.empty()) script += fmt::format(" {:.9g}", series.errors[i]);
+        script += "\n";
+      }
       script += "EOD\n";
     }
   }
@@ -75,11 +80,14 @@ std::string gnuplot_script(const Picture& picture) {
       for (const auto& point : series.points) any = any || shown(panel, point);
       if (!any) continue;
       // The same colour for the same place in every panel.
-      plots.push_back(fmt::format(
-          "$data_{}_{} using 1:2 with {} linetype {} title {}", p, s,
-          series.joined ? "linespoints linewidth 1.5 pointtype 7 pointsize 0.5"
-                        : "points pointtype 5 pointsize 1.2",
-          s + 1, quoted(series.title)));
+      std::string with = series.joined
+                             ? "linespoints linewidth 1.5 pointtype 7 pointsize 0.5"
+                             : "points pointtype 5 pointsize 1.2";
+      if (!series.errors.empty()) with = "yerrorbars pointtype 7 pointsize 0.5";
+      if (!series.style.empty()) with = series.style;
+      plots.push_back(fmt::format("$data_{}_{} using {} with {} linetype {} title {}", p,
+                                  s, series.errors.empty() ? "1:2" : "1:2:3", with, s + 1,
+                                  quoted(series.title)));
     }
     if (plots.empty()) {
       script +=

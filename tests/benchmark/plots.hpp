@@ -19,6 +19,8 @@ struct Series {
   std::string title;
   std::vector<std::pair<double, double>> points;  // (x, y)
   bool joined = true;                             // lines and points, or points only
+  std::vector<double> errors;  // y's error bars, one a point; none: no bars
+  std::string style;           // gnuplot's "with ..." words; none: as `joined` says
 };
 
 struct Panel {

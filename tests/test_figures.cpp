@@ -1,0 +1,45 @@
+// Lesson 11's pictures (tests/figures/lesson11_figures.cpp) can still be
+// made, and the committed ones say what the lesson says. Not a measurement:
+// `gas-figures --smoke` runs every part a hundred times shorter, into a
+// scratch folder, without pictures; this test checks that each part wrote its
+// numbers. (The real pictures are made by hand, in a few minutes:
+// lessons/11-kinetic-theory.md, "Lesson 11 in pictures".)
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using gas::testing::lines_of;
+using gas::testing::read_file;
+
+}  // namespace
+
+TEST_SUITE("figures") {
+  TEST_CASE("gas-figures --smoke writes the numbers of every picture") {
+    const gas::testing::Scratch scratch;
+    const std::string command = fmt::format("'{}' --smoke --out '{}' 2>'{}'", GAS_FIGURES,
+                                            scratch.path.string(), scratch.file("err"));
+    REQUIRE_MESSAGE(std::system(command.c_str()) == 0, "gas-figures --smoke failed");
+    // One line per area fraction, per speed bin, per bin of each curve.
+    const std::vector<std::pair<std::string, std::size_t>> files = {
+        {"eos.csv", 1 + 14},
+        {"speeds.csv", 1 + 50},
+        {"structure-contact.csv", 1 + 4},
+        {"structure-0.5.csv", 1 + 60 + 200}};
+    for (const auto& [name, lines] : files) {
+      CAPTURE(name);
+      CHECK(lines_of(read_file(scratch.file(name))).size() == lines);
+    }
+    // H: the two runs, a line per display step (T0 = 0.25 to T = 20 and 60).
+    CHECK(lines_of(read_file(scratch.file("h-theorem.csv"))).size() == 1 + 80 + 240);
+  }
+}
