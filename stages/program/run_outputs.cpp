@@ -112,10 +112,13 @@ RunOutputs::RunOutputs(const Options& options, Display& display)
 
 void RunOutputs::record(const Step& step) {
   if (events_ && !step.collisions.empty()) {
-    // The step's lines formatted into one buffer, written at once.
+    // The step's lines formatted into one buffer, written at once. T in the
+    // fewest digits that read back to the same double ("{}": shortest
+    // round-trip), not always 17: the same double for a reader, at about half
+    // the cost of 17 digits, which made --events a third of a collision.
     fmt::memory_buffer lines;
     for (const Collision& c : step.collisions) {
-      fmt::format_to(std::back_inserter(lines), "{:.17g},{},{},{}\n", c.time,
+      fmt::format_to(std::back_inserter(lines), "{},{},{},{}\n", c.time,
                      static_cast<int>(c.kind), c.first, c.second);
     }
     events_.write({lines.data(), lines.size()});
