@@ -1,6 +1,7 @@
 // What a run leaves behind besides its frames. See run_outputs.hpp.
 #include "program/run_outputs.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <sys/stat.h>
@@ -9,7 +10,6 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <iterator>
 #include <stdexcept>
 
 #include "stage2_input.hpp"
@@ -116,10 +116,15 @@ void RunOutputs::record(const Step& step) {
     // fewest digits that read back to the same double ("{}": shortest
     // round-trip), not always 17: the same double for a reader, at about half
     // the cost of 17 digits, which made --events a third of a collision.
+    // The format compiled (FMT_COMPILE: not read again for every line) and
+    // written straight into the buffer: a line costs some 700 instructions,
+    // a fifth of a collision at N = 10^3 (1800 by "{:.17g}" through an
+    // iterator).
     fmt::memory_buffer lines;
+    auto out = fmt::appender(lines);
     for (const Collision& c : step.collisions) {
-      fmt::format_to(std::back_inserter(lines), "{},{},{},{}\n", c.time,
-                     static_cast<int>(c.kind), c.first, c.second);
+      out = fmt::format_to(out, FMT_COMPILE("{},{},{},{}\n"), c.time,
+                           static_cast<int>(c.kind), c.first, c.second);
     }
     events_.write({lines.data(), lines.size()});
   }
