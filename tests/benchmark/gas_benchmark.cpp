@@ -614,6 +614,15 @@ class Csv {
 
 // ------------------------------------------------------------ 5. the program
 
+// The smoke run's scene for sections 5 and 6: 200 random balls, written in
+// the section's scratch folder.
+fs::path smoke_scene(const fs::path& scratch) {
+  fs::create_directories(scratch);
+  const fs::path tiny = scratch / "smoke-200.scene";
+  std::ofstream(tiny) << gas::benchmark::random_scene_text(200, 1989);
+  return tiny;
+}
+
 // The scenes of section 5: the targets' data/large-10000.scene and the 10^5
 // one; for a smoke run, a tiny scene of its own in the scratch folder.
 ProgramSettings program_settings_for(const Settings& settings, const Sizes& sizes) {
@@ -624,10 +633,7 @@ ProgramSettings program_settings_for(const Settings& settings, const Sizes& size
   p.time_limit = sizes.program_time_limit;
   p.scratch = fs::temp_directory_path() / fmt::format("gas-benchmark-{}", getpid());
   if (settings.smoke) {
-    fs::create_directories(p.scratch);
-    const fs::path tiny = p.scratch / "smoke-200.scene";
-    std::ofstream(tiny) << gas::benchmark::random_scene_text(200, 1989);
-    p.scenes.push_back({"smoke-200.scene", tiny, 20, 2});
+    p.scenes.push_back({"smoke-200.scene", smoke_scene(p.scratch), 20, 2});
     return p;
   }
   const fs::path data = fs::path(GAS_SOURCE_DIR) / "data";
@@ -648,10 +654,7 @@ gas::benchmark::PeerSettings peer_settings_for(const Settings& settings,
   p.time_limit = sizes.program_time_limit;
   p.scratch = fs::temp_directory_path() / fmt::format("gas-benchmark-peer-{}", getpid());
   if (settings.smoke) {
-    fs::create_directories(p.scratch);
-    const fs::path tiny = p.scratch / "smoke-200.scene";
-    std::ofstream(tiny) << gas::benchmark::random_scene_text(200, 1989);
-    p.scenes = {tiny};
+    p.scenes = {smoke_scene(p.scratch)};
     p.rounds = 1;
     p.collisions_per_run = 2e4;
     return p;

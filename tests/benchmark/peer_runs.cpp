@@ -243,6 +243,10 @@ std::string peer_section(const PeerSettings& settings, const PeerFigures& figure
   } else {
     text += fmt::format("**not run**: {}.\n\n", figures.peer_build);
   }
+  text +=
+      "(To run it: `git clone https://github.com/Syrocco/Graphical-EDMD /tmp/peer`, "
+      "then `build/tests/benchmark/gas-benchmark --peer /tmp/peer`; it needs `make` "
+      "and `gcc`.)\n\n";
   text += fmt::format(
       "Ball-ball collisions per second of each process's own processor time (user + "
       "system, by wait4), the fixed costs (reading, placing, the first predictions, "
