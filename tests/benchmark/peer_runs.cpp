@@ -174,7 +174,7 @@ PeerFigures measure_peer(const PeerSettings& settings) {
   PeerFigures figures;
   fs::create_directories(settings.scratch);
   if (!settings.peer) {
-    figures.peer_build = "not run: no checkout given (gas-benchmark --peer DIR)";
+    figures.peer_build = "no checkout given (gas-benchmark --peer DIR)";
   } else {
     figures.peer_commit = commit_of(*settings.peer);
     progress("6/6 the peer: make -C {}", settings.peer->string());
