@@ -2,8 +2,8 @@
 // writes every part of its report. Not a measurement: `gas-benchmark --smoke`
 // runs each section at tiny sizes, in seconds, into a scratch folder; this
 // test checks the report's sections, its description of the machine and the
-// build, the CSV files beside it, the runs of the program itself (section 5,
-// on a tiny scene) and the pictures: drawn if gnuplot is installed, else
+// build, the CSV files beside it, the runs of the program itself (sections 5
+// and 6, on a tiny scene) and the pictures: drawn if gnuplot is installed, else
 // said to be missing. (The real report is made by hand, in minutes:
 // README.md, "Speed against error".)
 #include <doctest/doctest.h>
@@ -43,19 +43,21 @@ TEST_SUITE("benchmark") {
          {"# Speed against error\n", "\n## Targets\n", "\n## 1. Throughput\n",
           "\n## 2. Accuracy against cost for the number type\n",
           "\n## 3. Time reversal\n", "\n## 4. What an event-driven program buys\n",
-          "\n## 5. The program as users run it\n"}) {
+          "\n## 5. The program as users run it\n",
+          "\n## 6. Beside the best peer, and a million balls\n"}) {
       CHECK_MESSAGE(report.find(heading) != std::string::npos, "no heading " << heading);
     }
     // The machine and the build are described.
     for (const char* row : {"| CPU |", "| compiler |", "| build type |", "| flags |",
                             "| one read from memory, at random among"})
       CHECK_MESSAGE(report.find(row) != std::string::npos, "no row " << row);
-    // The five targets are each judged (two of them on the program, section 5).
+    // Six targets are judged: two on the program (section 5), one on
+    // --events (section 6); the peer's is not (no --peer: not run).
     std::size_t judged = 0;
     for (std::size_t at = report.find("met**"); at != std::string::npos;
          at = report.find("met**", at + 1))
       ++judged;
-    CHECK(judged == 5);
+    CHECK(judged == 6);
     // Each section's numbers: the tables have rows for every way and type.
     for (const char* cell :
          {"| float |", "| double |", "| long double |", "| __float128 |",
@@ -72,6 +74,11 @@ TEST_SUITE("benchmark") {
     const std::string program = report.substr(report.find("\n## 5."));
     CHECK_MESSAGE(program.find("failed") == std::string::npos, program);
     CHECK_MESSAGE(program.find("not known") == std::string::npos, program);
+    // Section 6 without --peer: build/gas timed, the peer said not run.
+    const std::string peer = report.substr(report.find("\n## 6."));
+    CHECK_MESSAGE(peer.find("**not run**: no checkout given") != std::string::npos, peer);
+    CHECK_MESSAGE(peer.find("\n| 200 | ") != std::string::npos, peer);
+    CHECK_MESSAGE(peer.find("failed") == std::string::npos, peer);
 
     // The pictures: drawn and linked if gnuplot is installed, else the report
     // says why there are none.
@@ -91,7 +98,7 @@ TEST_SUITE("benchmark") {
     // fields as the header.
     for (const char* name : {"throughput.csv", "default-scene.csv", "number-types.csv",
                              "number-types-distance.csv", "time-reversal.csv",
-                             "time-stepping.csv", "program.csv"}) {
+                             "time-stepping.csv", "program.csv", "peer.csv"}) {
       CAPTURE(name);
       const std::vector<std::string> lines = lines_of(read_file((out / name).string()));
       REQUIRE(lines.size() >= 2);

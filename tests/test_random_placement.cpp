@@ -118,10 +118,10 @@ TEST_SUITE("random-placement") {
   TEST_CASE("random: COUNT and SEED and SPEED and the density are checked") {
     const std::string table = "a 1\nT0 1\nA1 100\nA2 100\n";
     CHECK(refusal(table + "random 0 1 1\n") ==
-          "random.scene:5: 'random' COUNT = 0 must be a whole number from 1 to 100000");
-    CHECK(refusal(table + "random 100001 1 1\n") ==
-          "random.scene:5: 'random' COUNT = 100001 must be a whole number from 1 to "
-          "100000");
+          "random.scene:5: 'random' COUNT = 0 must be a whole number from 1 to 1000000");
+    CHECK(refusal(table + "random 1000001 1 1\n") ==
+          "random.scene:5: 'random' COUNT = 1000001 must be a whole number from 1 to "
+          "1000000");
     CHECK(refusal(table + "random 3 -1 1\n") ==
           "random.scene:5: 'random' SEED = -1 must be a whole number from 0 to 2^53");
     CHECK(refusal(table + "random 3 0.5 1\n") ==
@@ -142,10 +142,10 @@ TEST_SUITE("random-placement") {
     CHECK(parse(table + "N 3\nball 50 50 0 0\nrandom 2 1 1\n").balls.size() == 3);
     // 'random' alone is a whole gas.
     CHECK(parse(table + "random 1 1 1\n").balls.size() == 1);
-    // The largest COUNT, and 2^53 as SEED, are accepted (radius 0.5: 10^5
-    // balls on 1000 x 1000 cover 0.079).
-    CHECK(parse("a 0.5\nT0 1\nA1 1000\nA2 1000\nrandom 100000 9007199254740992 1\n")
-              .balls.size() == 100000);
+    // The largest COUNT, and 2^53 as SEED, are accepted (radius 0.5: 10^6
+    // balls on 3000 x 3000 cover 0.087).
+    CHECK(parse("a 0.5\nT0 1\nA1 3000\nA2 3000\nrandom 1000000 9007199254740992 1\n")
+              .balls.size() == 1000000);
   }
 
   TEST_CASE("lattice: COUNT balls on a lattice filling the table and every speed SPEED") {
@@ -182,7 +182,7 @@ TEST_SUITE("random-placement") {
           "random.scene:6: 'lattice' point (50, 50) for ball 2 is taken by a 'ball' "
           "line's ball");
     CHECK(refusal(table + "lattice 0 1 1\n") ==
-          "random.scene:5: 'lattice' COUNT = 0 must be a whole number from 1 to 100000");
+          "random.scene:5: 'lattice' COUNT = 0 must be a whole number from 1 to 1000000");
     CHECK(refusal(table + "random 3 1 1\nlattice 3 1 1\n") ==
           "random.scene:6: one 'random' or 'lattice' line only ('random' is on line 5)");
     CHECK(refusal(table + "lattice 3 1 1\nlattice 3 1 1\n") ==

@@ -17,11 +17,6 @@ constexpr std::uint64_t scan_event = std::uint64_t{1} << 63;
 
 // ---- a ball's list of predictions: the record's first few, then the rest
 
-CellGrid::Prediction& CellGrid::prediction(int ball, std::uint32_t i) {
-  if (i < predictions_kept) return record(ball).first[i];
-  return more_predictions_[static_cast<std::size_t>(ball)][i - predictions_kept];
-}
-
 // (The earliest stays at the front: the list's key.)
 void CellGrid::add(int ball, Prediction p) {
   Record& r = record(ball);
@@ -29,7 +24,7 @@ void CellGrid::add(int ball, Prediction p) {
   if (r.listed < predictions_kept) {
     r.first[r.listed] = p;
   } else {
-    more_predictions_[static_cast<std::size_t>(ball)].push_back(p);
+    more_predictions_[ball].push_back(p);
   }
   ++r.listed;
 }
@@ -40,24 +35,34 @@ template <typename Dropped>
 void CellGrid::drop(int ball, Dropped dropped) {
   Record& r = record(ball);
   const std::uint32_t listed = r.listed;
+  // The rest of the list, if it is longer than the record holds (looked up
+  // once, not for each prediction).
+  std::vector<Prediction>* more =
+      listed > predictions_kept ? &more_predictions_.at(ball) : nullptr;
+  auto at = [&](std::uint32_t i) -> Prediction& {
+    return i < predictions_kept ? r.first[i] : (*more)[i - predictions_kept];
+  };
   std::uint32_t kept = 0;
   for (std::uint32_t i = 0; i < listed; ++i) {
-    const Prediction p = prediction(ball, i);
+    const Prediction p = at(i);
     if (dropped(p)) continue;
-    Prediction& slot = prediction(ball, kept++);
+    Prediction& slot = at(kept++);
     slot = p;
     if (earlier(ball, slot, r.first[0])) std::swap(slot, r.first[0]);
   }
   r.listed = kept;
-  if (listed > predictions_kept)
-    more_predictions_[static_cast<std::size_t>(ball)].resize(
-        kept > predictions_kept ? kept - predictions_kept : 0);
+  if (more != nullptr) {
+    if (kept > predictions_kept) {
+      more->resize(kept - predictions_kept);
+    } else {
+      more_predictions_.erase(ball);
+    }
+  }
 }
 
 // The whole list dropped.
 void CellGrid::forget(int ball) {
-  if (record(ball).listed > predictions_kept)
-    more_predictions_[static_cast<std::size_t>(ball)].clear();
+  if (record(ball).listed > predictions_kept) more_predictions_.erase(ball);
   record(ball).listed = 0;
 }
 
@@ -274,7 +279,7 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
                          4.0 * static_cast<double>(n) + 16);
 
   records_.assign(n + 1, Record{});
-  more_predictions_.assign(n + 1, {});
+  more_predictions_.clear();
   count_.assign(n + 1, 0);
   next_in_cell_.assign(n + 1, 0);
   head_.assign(static_cast<std::size_t>(cells_.columns + 2) *

@@ -50,6 +50,7 @@
 #pragma once
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "beyond/cell_layout.hpp"
@@ -135,7 +136,6 @@ class CellGrid final : public FirstCollisionFinder {
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
 
   // A ball's list of predictions.
-  Prediction& prediction(int ball, std::uint32_t i);
   void add(int ball, Prediction p);  // (keeps the earliest at the front)
   template <typename Dropped>
   void drop(int ball, Dropped dropped);
@@ -162,8 +162,10 @@ class CellGrid final : public FirstCollisionFinder {
   CellLayout cells_;                 // the cells over the table (beyond/cell_layout.hpp)
   const Gas* gas_ = nullptr;         // the gas of the last call (its rows of R)
   LargePageVector<Record> records_;  // by ball number 1..N (0 unused)
-  std::vector<std::vector<Prediction>> more_predictions_;  // by ball: its list
-                                                           // beyond the record's
+  // By ball, for the few whose list is longer than the record holds: the
+  // rest of it. (Not a list for every ball: 24 bytes a ball, for 10^6 balls
+  // more than the rows of R themselves.)
+  std::unordered_map<std::int32_t, std::vector<Prediction>> more_predictions_;
   LargePageVector<std::uint32_t> count_;        // by ball: its collisions so far (wraps
                                                 // after 2^32: harmless unless a
                                                 // prediction waits that long)

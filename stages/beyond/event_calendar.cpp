@@ -11,9 +11,16 @@ namespace gas {
 
 namespace {
 
-// Days beyond this are all one day (their keys are still compared exactly):
-// far enough that no run reaches it, small enough to be an exact double.
-constexpr double last_day = 0x1p62;
+// Days beyond this are all one day (their keys are still compared exactly);
+// the calendar is laid out afresh (today back to day 0) when today reaches
+// half of it. An exact double, and a day that fits in 32 bits.
+constexpr double last_day = 0x1p30;
+constexpr std::int32_t lay_out_again_on = 1 << 29;
+
+// The median wait is taken from at most this many keys, evenly spread over
+// the balls: its use is to choose a day's length to within a few per cent,
+// and a copy of every key would cost 8 bytes a ball.
+constexpr std::size_t most_waits_sampled = 1 << 16;
 
 // How much looking (balls compared on today's page, empty days turned) per
 // question the calendar puts up with before it lays itself out again with
@@ -42,10 +49,10 @@ void EventCalendar::reset(std::size_t count) {
 // (a later time never gets an earlier day: rounded subtraction and
 // multiplication by a positive number are monotonic), so days sort keys as
 // their times do, and only keys of one day need comparing.
-std::int64_t EventCalendar::day_of(double time) const {
+std::int32_t EventCalendar::day_of(double time) const {
   const double days = (time - first_day_starts_) * days_per_unit_;
   if (!(days >= 0)) return today_;  // in the past: today
-  const auto day = static_cast<std::int64_t>(std::min(days, last_day));
+  const auto day = static_cast<std::int32_t>(std::min(days, last_day));
   return std::max(day, today_);
 }
 
@@ -88,14 +95,17 @@ void EventCalendar::lay_out() {
     if (entry.day != off) earliest_time = std::min(earliest_time, entry.time);
   // The median wait, not the mean: one ball whose next event is 10^70 time
   // units away (a ball all but at rest) must not make every day that long.
+  // (From a sample: every stride-th ball.)
   waits_.clear();
-  for (const Entry& entry : entries_)
-    if (entry.day != off) waits_.push_back(entry.time - earliest_time);
+  const std::size_t stride = entries_.size() / most_waits_sampled + 1;
+  for (std::size_t ball = 1; ball < entries_.size(); ball += stride)
+    if (entries_[ball].day != off) waits_.push_back(entries_[ball].time - earliest_time);
+  if (waits_.empty()) waits_.push_back(0);  // (only unsampled balls have keys)
   const auto middle = waits_.begin() + static_cast<std::ptrdiff_t>(waits_.size() / 2);
   std::nth_element(waits_.begin(), middle, waits_.end());
   // (For waits spread as in a gas, roughly exponentially, the median is 0.7
   // of the mean, and near today N keys fall about N / mean to a unit of time.)
-  double day_length = 3 * *middle / static_cast<double>(waits_.size());
+  double day_length = 3 * *middle / static_cast<double>(on_calendar_);
   if (!(day_length > 0 && day_length < never)) day_length = 1;  // all at one time
   days_per_unit_ = 1 / day_length;
   if (!(days_per_unit_ < never)) days_per_unit_ = 0x1p1000;  // days shorter than 1e-308
@@ -144,12 +154,12 @@ int EventCalendar::earliest() {
     questions_ = looked_ = 0;
   }
   // Turn the pages from today until a day has a ball on it. (After a year
-  // of empty days, lay the calendar out afresh: then the earliest key falls
-  // on day 0.)
+  // of empty days, or near the last day 32 bits count, lay the calendar out
+  // afresh: then the earliest key falls on day 0.)
   for (std::size_t empty_days = 0;; ++empty_days) {
     const int ball = earliest_of_today();
     if (ball != 0) return ball;
-    if (empty_days == page_.size()) {
+    if (empty_days == page_.size() || today_ >= lay_out_again_on) {
       lay_out();
     } else {
       ++today_;

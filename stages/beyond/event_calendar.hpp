@@ -50,14 +50,16 @@ class EventCalendar {
   // in a list of balls linked one way (0 ends it). The key's second part,
   // the place in the scan, is needed only for a tie of times: it is kept
   // apart (`places_`), so that an entry is small.
+  // (16 bytes: days are counted in 32 bits, the calendar laid out afresh
+  // before today reaches the last of them.)
   struct Entry {
     double time = 0;         // its earliest event (model time)
-    std::int64_t day = off;  // the day it falls on (today if in the past)
+    std::int32_t day = off;  // the day it falls on (today if in the past)
     std::int32_t next = 0;   // the next ball on its page
   };
-  static constexpr std::int64_t off = -1;  // a `day` for: not on the calendar
+  static constexpr std::int32_t off = -1;  // a `day` for: not on the calendar
 
-  std::int64_t day_of(double time) const;
+  std::int32_t day_of(double time) const;
   void put_on_page(int ball);
   void take_off_page(int ball);
   void lay_out();
@@ -65,7 +67,7 @@ class EventCalendar {
 
   LargePageVector<Entry> entries_;         // by ball number 1..N (entry 0 unused)
   LargePageVector<std::uint64_t> places_;  // by ball number: its key's place
-  std::vector<double> waits_;              // lay_out's scratch
+  std::vector<double> waits_;              // lay_out's scratch (a sample of the keys)
   LargePageVector<std::int32_t> page_;     // first ball on each page, or 0
   std::uint64_t page_mask_ = 0;            // pages - 1 (pages is a power of two)
   std::size_t on_calendar_ = 0;            // how many balls have an event
@@ -73,7 +75,7 @@ class EventCalendar {
   double first_day_starts_ = 0;            // model time at which day 0 starts
   double days_per_unit_ = 0;               // 1 / the length of a day in model time
   long long layouts_ = 0;                  // lay_out calls since reset
-  std::int64_t today_ = 0;                 // the day of the earliest key
+  std::int32_t today_ = 0;                 // the day of the earliest key
   std::uint64_t questions_ = 0;            // calls of `earliest` since the last check
   std::uint64_t looked_ = 0;               // balls compared and empty days turned since
 };

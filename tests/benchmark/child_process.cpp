@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <thread>
 
@@ -82,6 +83,17 @@ class IgnoreBrokenPipes {
 
 double seconds_between(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
+}
+
+// The most memory the running child has held so far: VmHWM in
+// /proc/PID/status, its own since it started its program (0 if unknown).
+// (wait4's ru_maxrss will not do: a child started by posix_spawn shares this
+// process's memory until its exec, and counts that as its own peak.)
+long long resident_peak_kb(pid_t child) {
+  std::ifstream status(fmt::format("/proc/{}/status", child));
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::atoll(line.c_str() + 6);
+  return 0;
 }
 
 }  // namespace
@@ -194,8 +206,9 @@ ChildRun run_child(const std::string& program, const std::vector<std::string>& a
     const auto wait_ms =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
     const int ready = poll(
-        watched, count, static_cast<int>(std::min<long long>(wait_ms.count() + 1, 1000)));
+        watched, count, static_cast<int>(std::min<long long>(wait_ms.count() + 1, 20)));
     if (ready < 0 && errno != EINTR) break;
+    run.max_rss_kb = std::max(run.max_rss_kb, resident_peak_kb(child));
     for (nfds_t i = 0; i < count; ++i) {
       if (watched[i].revents == 0) continue;
       Descriptor& d = *owners[i];

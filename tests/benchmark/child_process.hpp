@@ -23,6 +23,8 @@ struct ChildRun {
   int signal = 0;              // the signal that ended it, if one did
   double wall_seconds = 0;     // from the spawn to its exit
   double cpu_seconds = 0;      // its user and system time
+  long long max_rss_kb = 0;    // the most memory it held at once (kB, VmHWM seen
+                               // every 20 ms while it ran)
   long long output_bytes = 0;  // what it wrote to standard output
   std::string error;           // its standard error (the start), or why it did not start
 

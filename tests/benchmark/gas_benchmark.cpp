@@ -16,14 +16,19 @@
 //      several steps against the stages.
 //   5. The program as users run it: build/gas itself, timed as a process on
 //      large scenes, beside the engine on the same gas (program_runs.hpp).
+//   6. Beside the best peer: build/gas and Graphical-EDMD as processes on
+//      the same gases, 10^3 to 10^5 balls, and build/gas alone at 10^6
+//      (peer_runs.hpp); "not run" for the peer without --peer.
 //
 // and two pictures beside it, drawn by gnuplot if it is installed
 // (plots.hpp): collisions per second against N, and the distance from the
 // 113-bit run against collisions per ball.
 //
-// Usage:  gas-benchmark [--smoke] [--out DIR]
+// Usage:  gas-benchmark [--smoke] [--out DIR] [--peer DIR]
 //   --smoke   tiny sizes, a few seconds (the test suite runs this)
 //   --out     where to write (default: data/reports of the source tree)
+//   --peer    a checkout of github.com/Syrocco/Graphical-EDMD, for section 6
+//             (built there with its own Makefile; the project holds none of it)
 // Progress goes to standard error. Single-threaded: one core (and `gas`
 // runs alone while it is timed).
 #include <fmt/format.h>
@@ -54,6 +59,7 @@
 #include "beyond/strategy.hpp"
 #include "engine.hpp"
 #include "lyapunov_horizon.hpp"
+#include "peer_runs.hpp"
 #include "program/console.hpp"
 #include "program_runs.hpp"
 #include "reference_gas.hpp"
@@ -102,6 +108,7 @@ using gas::benchmark::yes_no;
 struct Settings {
   bool smoke = false;
   fs::path out = fs::path(GAS_SOURCE_DIR) / "data" / "reports";
+  std::optional<fs::path> peer;  // a checkout of Graphical-EDMD (section 6)
 };
 
 // The sizes of each section: the full report, or a smoke run of seconds.
@@ -622,6 +629,15 @@ class Csv {
 
 // ------------------------------------------------------------ 5. the program
 
+// The smoke run's scene for sections 5 and 6: 200 random balls, written in
+// the section's scratch folder.
+fs::path smoke_scene(const fs::path& scratch) {
+  fs::create_directories(scratch);
+  const fs::path tiny = scratch / "smoke-200.scene";
+  std::ofstream(tiny) << gas::benchmark::random_scene_text(200, 1989);
+  return tiny;
+}
+
 // The scenes of section 5: the targets' data/large-10000.scene and the 10^5
 // one; for a smoke run, a tiny scene of its own in the scratch folder.
 ProgramSettings program_settings_for(const Settings& settings, const Sizes& sizes) {
@@ -632,15 +648,35 @@ ProgramSettings program_settings_for(const Settings& settings, const Sizes& size
   p.time_limit = sizes.program_time_limit;
   p.scratch = fs::temp_directory_path() / fmt::format("gas-benchmark-{}", getpid());
   if (settings.smoke) {
-    fs::create_directories(p.scratch);
-    const fs::path tiny = p.scratch / "smoke-200.scene";
-    std::ofstream(tiny) << gas::benchmark::random_scene_text(200, 1989);
-    p.scenes.push_back({"smoke-200.scene", tiny, 20, 2});
+    p.scenes.push_back({"smoke-200.scene", smoke_scene(p.scratch), 20, 2});
     return p;
   }
   const fs::path data = fs::path(GAS_SOURCE_DIR) / "data";
   p.scenes.push_back({"data/large-10000.scene", data / "large-10000.scene", 1000, 2});
   p.scenes.push_back({"data/large-100000.scene", data / "large-100000.scene", 100, 0.05});
+  return p;
+}
+
+// ------------------------------------------------------------ 6. the peer
+
+// The scenes of section 6: data/large-N.scene for N = 10^3 to 10^6, the peer
+// up to 10^5; for a smoke run, a tiny scene of its own and a few collisions.
+gas::benchmark::PeerSettings peer_settings_for(const Settings& settings,
+                                               const Sizes& sizes) {
+  gas::benchmark::PeerSettings p;
+  p.program = GAS_PROGRAM;
+  p.peer = settings.peer;
+  p.time_limit = sizes.program_time_limit;
+  p.scratch = fs::temp_directory_path() / fmt::format("gas-benchmark-peer-{}", getpid());
+  if (settings.smoke) {
+    p.scenes = {smoke_scene(p.scratch)};
+    p.rounds = 1;
+    p.collisions_per_run = 2e4;
+    return p;
+  }
+  const fs::path data = fs::path(GAS_SOURCE_DIR) / "data";
+  for (const char* n : {"1000", "10000", "100000", "1000000"})
+    p.scenes.push_back(data / fmt::format("large-{}.scene", n));
   return p;
 }
 
@@ -925,6 +961,13 @@ int run(const Settings& settings) {
   gas::benchmark::write_program_csv(settings.out / "program.csv", program_runs);
   fs::remove_all(program_settings.scratch);
 
+  // ---- 6. beside the best peer, and a million balls
+  const gas::benchmark::PeerSettings peer_settings = peer_settings_for(settings, sizes);
+  const gas::benchmark::PeerFigures peer_runs =
+      gas::benchmark::measure_peer(peer_settings);
+  gas::benchmark::write_peer_csv(settings.out / "peer.csv", peer_runs);
+  fs::remove_all(peer_settings.scratch);
+
   // ---- the pictures
   progress("pictures: gnuplot");
   const std::string throughput_picture = gas::benchmark::picture_markdown(
@@ -999,6 +1042,7 @@ int run(const Settings& settings) {
       "{} |\n",
       default_ratio, yes_no(default_ratio >= 0.97)));
   add(gas::benchmark::program_targets(program_settings, program_runs));
+  add(gas::benchmark::peer_targets(peer_runs));
   add("\n");
   add("(\"No slower\" allows 3 %: two runs of the very same code differ by that much "
       "on a shared machine.)\n\n");
@@ -1278,6 +1322,9 @@ int run(const Settings& settings) {
   // 5.
   add(gas::benchmark::program_section(program_settings, program_runs));
 
+  // 6.
+  add(gas::benchmark::peer_section(peer_settings, peer_runs));
+
   {
     std::ofstream file(settings.out / "speed-against-error.md");
     if (!file)
@@ -1298,8 +1345,10 @@ int main(int argc, char** argv) {
       settings.smoke = true;
     } else if (argument == "--out" && i + 1 < argc) {
       settings.out = argv[++i];
+    } else if (argument == "--peer" && i + 1 < argc) {
+      settings.peer = fs::absolute(argv[++i]);
     } else {
-      fmt::print(stderr, "usage: gas-benchmark [--smoke] [--out DIR]\n");
+      fmt::print(stderr, "usage: gas-benchmark [--smoke] [--out DIR] [--peer DIR]\n");
       return 2;
     }
   }
