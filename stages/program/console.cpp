@@ -132,7 +132,12 @@ class ConsoleRun {
         options.structure_path) {
       statistics_.emplace(control_.gas, histogram_bins, true,
                           options.structure_path.has_value());
-      // The Lyapunov exponent beside them, on the same hook (lesson 12).
+      control_.observer = &*statistics_;
+    }
+    // The Lyapunov exponent beside them, on the same hook, where it is shown
+    // or written: the statistics screen or --csv, not --structure alone
+    // (lesson 12).
+    if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path) {
       lyapunov_.emplace(control_.gas);
       observers_.emplace(std::vector<CollisionObserver*>{&*statistics_, &*lyapunov_});
       control_.observer = &*observers_;
@@ -232,7 +237,7 @@ class ConsoleRun {
     for (const char key : keys) {
       if ((key == 'A' || key == 'a') && statistics_) {
         statistics_->restart(control_.gas);
-        lyapunov_->restart();
+        if (lyapunov_) lyapunov_->restart();
       }
       const KeyEffect effect = press_key(control_, key);
       if (effect == KeyEffect::end) return false;
