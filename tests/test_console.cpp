@@ -26,9 +26,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
+#include <random>
 #include <regex>
 #include <string>
 #include <vector>
@@ -38,6 +41,7 @@
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
+#include "program/event_lines.hpp"
 #include "program/run_outputs.hpp"
 #include "stage2_input.hpp"
 #include "stage7_control.hpp"
@@ -619,6 +623,67 @@ TEST_SUITE("console") {
                                                    done[i].first, done[i].second));
       }
     }
+  }
+
+  TEST_CASE(
+      "an --events line written fast is fmt's \"{},{},{},{}\" of the collision, to the "
+      "character") {
+    // write_event_line lays out T itself (from fmt's own shortest digits) for
+    // exponents -4 to 15 and leaves the rest to fmt: every case of its layout
+    // (digits only, a point inside, 0.000 before), each edge of its range,
+    // the values it leaves to fmt, and a million moments at random, both
+    // from every exponent a double has (any bit pattern) and from a run's
+    // range 0 to 10^5; the integers at each change of their digit count.
+    std::mt19937_64 random(22);
+    std::vector<double> times = {0.0,
+                                 -0.0,
+                                 1e-4,
+                                 9.9999999999999991e-5,
+                                 0.00012,
+                                 0.5,
+                                 1,
+                                 10,
+                                 123400,
+                                 1e15,
+                                 9999999999999998.0,
+                                 1e16,
+                                 1.2345678901234567e16,
+                                 5e-324,
+                                 2.2250738585072014e-308,
+                                 std::numeric_limits<double>::max(),
+                                 -3.25,
+                                 gas::never,
+                                 -gas::never,
+                                 std::numeric_limits<double>::quiet_NaN(),
+                                 0.1 + 0.2,
+                                 4545.454545454545,
+                                 1e-300,
+                                 123456789012345680.0};
+    std::uniform_real_distribution<double> run_range(0, 1e5);
+    for (int i = 0; i < 500000; ++i) {
+      times.push_back(std::bit_cast<double>(random()));
+      times.push_back(run_range(random));
+    }
+    std::vector<int> numbers = {0, 1, -1, std::numeric_limits<int>::max(),
+                                std::numeric_limits<int>::min()};
+    for (int power = 10; power <= 1000000000; power *= 10)
+      for (const int n : {power - 1, power, power + 1, -power}) numbers.push_back(n);
+    char line[gas::longest_event_line];
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      const gas::Collision c{times[i], static_cast<gas::CollisionKind>(i % 4),
+                             numbers[i % numbers.size()],
+                             numbers[(i / numbers.size() + i) % numbers.size()]};
+      const std::string expected = fmt::format(
+          "{},{},{},{}\n", c.time, static_cast<int>(c.kind), c.first, c.second);
+      const std::string written(line, gas::write_event_line(line, c));
+      if (written != expected) {
+        CAPTURE(expected);
+        CHECK(written == expected);
+      }
+      ++checked;
+    }
+    CHECK(checked == times.size());
   }
 
   TEST_CASE(

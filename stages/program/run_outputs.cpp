@@ -1,7 +1,6 @@
 // What a run leaves behind besides its frames. See run_outputs.hpp.
 #include "program/run_outputs.hpp"
 
-#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <sys/stat.h>
@@ -13,6 +12,7 @@
 #include <stdexcept>
 
 #include "beyond/lyapunov_screen.hpp"
+#include "program/event_lines.hpp"
 #include "stage2_input.hpp"
 
 namespace gas {
@@ -113,25 +113,31 @@ RunOutputs::RunOutputs(const Options& options, Display& display)
   if (csv_) csv_.write(csv_header() + lyapunov_csv_header() + "\n");
 }
 
+// --events: its lines are written to the file in blocks of this many
+// characters (and at the end): a system call a block, not one every 4 kB.
+constexpr std::size_t event_block = std::size_t{1} << 16;
+
 void RunOutputs::record(const Step& step) {
   if (events_ && !step.collisions.empty()) {
-    // The step's lines formatted into one buffer, written at once. T in the
-    // fewest digits that read back to the same double ("{}": shortest
-    // round-trip), not always 17: the same double for a reader, at about half
-    // the cost of 17 digits, which made --events a third of a collision.
-    // The format compiled (FMT_COMPILE: not read again for every line) and
-    // written straight into the buffer: a line costs some 700 instructions,
-    // a fifth of a collision at N = 10^3 (1800 by "{:.17g}" through an
-    // iterator).
-    fmt::memory_buffer lines;
-    auto out = fmt::appender(lines);
+    // Each line put straight into the buffer (event_lines.hpp: T in the
+    // fewest digits that read back to the same double, the integers digit
+    // pair by digit pair, about 250 instructions a line, against some 700 by
+    // fmt's compiled "{},{},{},{}"), the buffer written whenever a block is
+    // full: --events then costs some 15 % of a collision at N = 10^3.
+    if (event_lines_.empty()) event_lines_.resize(event_block + longest_event_line);
+    char* const buffer = event_lines_.data();
     for (const Collision& c : step.collisions) {
-      out = fmt::format_to(out, FMT_COMPILE("{},{},{},{}\n"), c.time,
-                           static_cast<int>(c.kind), c.first, c.second);
+      event_lines_used_ = static_cast<std::size_t>(
+          write_event_line(buffer + event_lines_used_, c) - buffer);
+      if (event_lines_used_ >= event_block) write_event_lines();
     }
-    events_.write({lines.data(), lines.size()});
   }
   if (bell_ && !step.collisions.empty()) ring_bell();
+}
+
+void RunOutputs::write_event_lines() {
+  events_.write({event_lines_.data(), event_lines_used_});
+  event_lines_used_ = 0;
 }
 
 void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic,
@@ -140,6 +146,7 @@ void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic
 }
 
 void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics) {
+  write_event_lines();
   events_.close();
   csv_.close();
   if (dump_path_) dump_failure_ = write_whole(*dump_path_, scene_text(gas));

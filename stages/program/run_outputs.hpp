@@ -75,7 +75,8 @@ class RunOutputs {
   RunOutputs(const Options& options, Display& display);
 
   // After a display step: every collision of the step to --events (T,K,N1,N2),
-  // and a ring of the bell if anything collided.
+  // and a ring of the bell if anything collided. The lines gather in a
+  // buffer, written to the file a block at a time (and at the end).
   void record(const Step& step);
 
   // Is --csv written? (Its figures take a pass over every ball: the caller
@@ -100,8 +101,12 @@ class RunOutputs {
  private:
   // --bell: rings now, if bell_may_ring.
   void ring_bell();
+  // --events: the lines gathered so far to the file.
+  void write_event_lines();
 
   OutputFile events_;                                  // --events
+  std::vector<char> event_lines_;                      // its lines not yet written
+  std::size_t event_lines_used_ = 0;                   // their characters
   OutputFile csv_;                                     // --csv
   std::optional<std::string> dump_path_;               // --dump
   std::optional<std::string> dump_failure_;            // why --dump was not written
