@@ -17,13 +17,15 @@ std::optional<PictureRule> picture_rule_named(std::string_view name) {
 }
 
 // [anchor: take-display-step]
-Step take_display_step(Control& control, double time_limit, std::FILE* trace) {
+Step take_display_step(Control& control, double time_limit, std::FILE* trace,
+                       StepKeeps keeps) {
   Gas& gas = control.gas;
   Step step;
   // The step's end: T + T0, or the time limit if that comes first.
   const double now = gas.time;
   const double end = now + gas.display_step;
   const double target = end < time_limit ? end : time_limit;
+  const long long before = control.wall_collisions + control.ball_collisions;
 
   // Collision after collision up to the end, with no picture: the clock to
   // TC, stage 5 for every collision due then, stage 4 for the next one.
@@ -31,27 +33,33 @@ Step take_display_step(Control& control, double time_limit, std::FILE* trace) {
   while (control.next.kind != CollisionKind::none && control.next.time <= target) {
     gas.time = control.next.time;
     carry_out_due_collisions(control, step, trace);
+    if (!keeps.collisions) step.collisions.clear();  // no list: nobody reads it
   }
 
-  // The picture: the centres at the end of the step.
+  // The picture: the centres at the end of the step (only the clock, if
+  // nothing draws them).
   step.length = target - now;
-  shift_time(gas, control.picture, target);
+  if (keeps.picture) {
+    shift_time(gas, control.picture, target);
+  } else {
+    gas.time = target;
+  }
   if (trace != nullptr) {
     fmt::print(
         trace,
         "stage 5  new coordinates: T1 = {} = {}, T = {}, {} collisions on the way\n",
         target < end ? "the time left" : "T0", step.length, gas.time,
-        step.collisions.size());
+        control.wall_collisions + control.ball_collisions - before);
   }
   return step;
 }
 // [/anchor: take-display-step]
 
-Step take_step_by(PictureRule rule, Control& control, double time_limit,
-                  std::FILE* trace) {
+Step take_step_by(PictureRule rule, Control& control, double time_limit, std::FILE* trace,
+                  StepKeeps keeps) {
   return rule == PictureRule::every_collision
              ? take_step(control, time_limit, trace)
-             : take_display_step(control, time_limit, trace);
+             : take_display_step(control, time_limit, trace, keeps);
 }
 
 }  // namespace gas

@@ -46,15 +46,28 @@ inline PictureRule picture_rule_for(std::size_t ball_count) {
 const char* picture_rule_name(PictureRule rule);
 std::optional<PictureRule> picture_rule_named(std::string_view name);
 
+// What a display step keeps for its caller besides the model: the picture's
+// centres (for a table drawn: 16 bytes a ball, twice, with the old ones) and
+// the list of its collisions (for --events and the bell: 24 bytes a
+// collision, some 10 a ball in a step). A run that reads neither keeps
+// neither: at N = 10^6 they were a quarter of the program's memory.
+struct StepKeeps {
+  bool picture = true;     // control.picture brought to the step's end
+  bool collisions = true;  // Step::collisions filled
+};
+
 // One display step with no picture at the collisions inside it: from T to
 // T + T0 (never past `time_limit`), carrying out every collision due on the
 // way, including those at the step's end, as take_step does. The picture's
-// centres are computed once, at the end. With `trace`, stage 5 says how
-// many collisions the step carried out.
-Step take_display_step(Control& control, double time_limit, std::FILE* trace);
+// centres are computed once, at the end, if `keeps` asks for them (else only
+// the clock moves there), and the collisions listed if it asks for them.
+// With `trace`, stage 5 says how many collisions the step carried out.
+Step take_display_step(Control& control, double time_limit, std::FILE* trace,
+                       StepKeeps keeps = {});
 
-// One step by the rule: take_step or take_display_step.
-Step take_step_by(PictureRule rule, Control& control, double time_limit,
-                  std::FILE* trace);
+// One step by the rule: take_step (which always keeps both) or
+// take_display_step.
+Step take_step_by(PictureRule rule, Control& control, double time_limit, std::FILE* trace,
+                  StepKeeps keeps = {});
 
 }  // namespace gas

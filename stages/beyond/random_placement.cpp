@@ -174,6 +174,9 @@ Gas place_random_balls(const SceneDescription& scene) {
 
   std::mt19937_64 generator(random.seed);
   const std::size_t first = gas.balls.size();
+  // R's rows at once, no more: grown ball by ball, the rows would take up to
+  // twice their room, and three times while being moved to a larger block.
+  gas.balls.reserve(first + random.count);
   if (random.lattice) {
     place_on_lattice(scene, gas);
   } else {

@@ -110,6 +110,12 @@ Figures figures_of(const Control& control) {
 // columns each on an 80-column screen.
 constexpr int histogram_bins = 36;
 
+// Does the run draw the table of balls (the picture's centres), or only
+// figures (--mode stats) or nothing (--mode none)?
+bool draws_table(const Options& options) {
+  return options.drawn && options.mode != ScreenMode::stats;
+}
+
 // One run of the program: stage 7's loop, with stage 6 drawing every step.
 class ConsoleRun {
  public:
@@ -123,7 +129,11 @@ class ConsoleRun {
         grid_(grid_size(options, terminal_)),
         frame_limit_(frame_limit(options, terminal_)),
         outputs_(options, display_),
+        keeps_{draws_table(options), options.events_path.has_value() || options.bell},
         screen_(prepare()) {
+    // No table drawn: the centres stage 7 started the picture with are
+    // never read (a display step keeps none, keeps_).
+    if (!keeps_.picture) control_.picture = Picture{};
     // Kinetic theory only for a run that shows or writes its figures: the
     // statistics screen, --csv or --structure. It hears of each collision
     // through stage 7's one hook (`statistics_` is made in place and never
@@ -180,7 +190,7 @@ class ConsoleRun {
       // Stages 4 and 5 (and stage 7 going back to stage 4 at a collision), up
       // to the next picture: the first collision, or T + T0 (the rule).
       const Step step =
-          take_step_by(rule_, control_, options_.until.value_or(never), trace);
+          take_step_by(rule_, control_, options_.until.value_or(never), trace, keeps_);
       ++frames_done;
       outputs_.record(step);
       // The picture and its figures (each a pass over the balls).
@@ -314,6 +324,7 @@ class ConsoleRun {
   GridSize grid_;
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
+  StepKeeps keeps_;  // what a display step keeps: the centres, the collisions
   std::optional<GasStatistics> statistics_;   // for --mode stats, --csv, --structure
   std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 12)
   std::optional<ObserverList> observers_;     // both on stage 7's hook
