@@ -77,8 +77,12 @@ char* write_digits(char* out, std::uint64_t value, int count) {
   put_eight(block + 16, eight_digits(static_cast<std::uint32_t>(value % eight)));
   if (count > 8) {
     put_eight(block + 8, eight_digits(static_cast<std::uint32_t>(value / eight % eight)));
-    if (count > 16)
-      put_eight(block, eight_digits(static_cast<std::uint32_t>(value / eight / eight)));
+    const std::uint64_t top = value / eight / eight;  // the digits before 16
+    if (top >= 10) {
+      put_eight(block, eight_digits(static_cast<std::uint32_t>(top)));
+    } else if (count > 16) {  // 17 digits, as half the moments have
+      block[7] = static_cast<char>('0' + top);
+    }
   }
   std::memcpy(out, block + digits_spill - count, digits_spill);
   return out + count;
@@ -136,23 +140,28 @@ char* write_time(char* out, double time) {
   const int leading = exponent + count;  // digits before the point (fmt: exp)
   if (leading - 1 < -4 || leading - 1 >= 16)
     return fmt::format_to(out, FMT_COMPILE("{}"), time);
-  if (exponent >= 0) {  // 1234e2 -> 123400
-    out = write_digits(out, decimal.significand, count);
-    std::memset(out, '0', 16);  // (at most 15 are needed: the line has room)
-    return out + exponent;
+  // Where the digits go: at once (1234e2 -> 123400, 1234e-2 -> 12.34), or
+  // after "0." and the zeros (1234e-6 -> 0.001234).
+  char* const digits = leading > 0 ? out : out + 2 - leading;
+  if (leading <= 0) {
+    out[0] = '0';
+    out[1] = '.';
+    std::memset(out + 2, '0', 4);  // (at most 4 are needed: the line has room)
   }
-  if (leading > 0) {  // 1234e-2 -> 12.34: the digits one place on, the
-                      // leading ones moved back before the point
-    char* const end = write_digits(out + 1, decimal.significand, count);
-    for (int i = 0; i < leading; ++i) out[i] = out[i + 1];
-    out[leading] = '.';
-    return end;
+  char* const end = write_digits(digits, decimal.significand, count);
+  if (exponent >= 0) {          // 1234e2 -> 123400
+    std::memset(end, '0', 16);  // (at most 15 are needed: the line has room)
+    return end + exponent;
   }
-  // 1234e-6 -> 0.001234
-  *out++ = '0';
-  *out++ = '.';
-  std::memset(out, '0', 4);  // (at most 4 are needed: the line has room)
-  return write_digits(out - leading, decimal.significand, count);
+  if (leading > 0) {  // 1234e-2 -> 12.34: the digits after the point moved
+                      // one place on (a copy of a fixed size: room again)
+    char moved[digits_spill];
+    std::memcpy(moved, digits + leading, digits_spill);
+    digits[leading] = '.';
+    std::memcpy(digits + leading + 1, moved, digits_spill);
+    return end + 1;
+  }
+  return end;
 }
 
 }  // namespace
@@ -160,7 +169,12 @@ char* write_time(char* out, double time) {
 char* write_event_line(char* out, const Collision& c) {
   out = write_time(out, c.time);
   *out++ = ',';
-  out = write_integer(out, static_cast<int>(c.kind));
+  const int kind = static_cast<int>(c.kind);  // K: one digit
+  if (kind >= 0 && kind <= 9) {
+    *out++ = static_cast<char>('0' + kind);
+  } else {
+    out = write_integer(out, kind);
+  }
   *out++ = ',';
   out = write_integer(out, c.first);
   *out++ = ',';

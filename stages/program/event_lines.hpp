@@ -18,9 +18,10 @@
 namespace gas {
 
 // The room one line needs: T takes at most 24 characters, the three
-// integers at most 11 each, with three commas and the newline; the writing
-// may put characters of no meaning after the line's end, within this room.
-inline constexpr std::size_t longest_event_line = 64;
+// integers at most 11 each, with three commas and the newline (62); the
+// writing may put up to 24 characters of no meaning after a number's
+// digits, which the next field or line writes over.
+inline constexpr std::size_t longest_event_line = 96;
 
 // Writes collision `c`'s line, newline included, at `out`, which has room
 // for longest_event_line characters. Returns the end of the line (what
