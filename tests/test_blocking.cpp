@@ -151,7 +151,8 @@ TEST_SUITE("kinetic-theory") {
     // (over 30 seeds, 20 +- 2.6: at least 12); at 2^17 samples, batches of
     // 2^13, never (a false alarm is one in a thousand).
     int seen = 0;
-    for (unsigned s = 0; s < 30; ++s) seen += std::isnan(ar1_blocking(0.99, 1000, s).error());
+    for (unsigned s = 0; s < 30; ++s)
+      seen += std::isnan(ar1_blocking(0.99, 1000, s).error());
     CHECK(seen >= 12);
     CHECK(!std::isnan(ar1_blocking(0.99, std::size_t{1} << 17, 3).error()));
   }
@@ -162,12 +163,17 @@ TEST_SUITE("kinetic-theory") {
     // degrees of freedom: 3 % at one, 1.7 % at three (the test then errs
     // towards "known"), so 3.5 %.
     const double z = 3.090232;
-    for (const auto& [degrees, quantile] : {std::pair{1.0, 10.828}, {2.0, 13.816},
-                                            {3.0, 16.266}, {4.0, 18.467},
-                                            {5.0, 20.515}, {10.0, 29.588},
-                                            {20.0, 45.315}, {30.0, 59.703}}) {
+    for (const auto& [degrees, quantile] : {std::pair{1.0, 10.828},
+                                            {2.0, 13.816},
+                                            {3.0, 16.266},
+                                            {4.0, 18.467},
+                                            {5.0, 20.515},
+                                            {10.0, 29.588},
+                                            {20.0, 45.315},
+                                            {30.0, 59.703}}) {
       CAPTURE(degrees);
-      CHECK(gas::chi_squared_quantile(degrees, z) == doctest::Approx(quantile).epsilon(0.035));
+      CHECK(gas::chi_squared_quantile(degrees, z) ==
+            doctest::Approx(quantile).epsilon(0.035));
       CHECK(gas::chi_squared_quantile(degrees, z) >= quantile);
     }
   }
@@ -212,15 +218,24 @@ TEST_SUITE("kinetic-theory") {
 
 namespace {
 
+// The mean of `values`, and their sum of squared deviations from it.
+double mean_of(const std::vector<double>& values) {
+  double mean = 0;
+  for (const double x : values) mean += x / static_cast<double>(values.size());
+  return mean;
+}
+double squares_of(const std::vector<double>& values) {
+  const double mean = mean_of(values);
+  double squares = 0;
+  for (const double x : values) squares += (x - mean) * (x - mean);
+  return squares;
+}
+
 // The standard error of the mean of `values` as if they were independent:
 // sqrt(s^2 / n) with the sample variance s^2 = sum (x - mean)^2 / (n - 1).
 double standard_error(const std::vector<double>& values) {
   const auto n = static_cast<double>(values.size());
-  double mean = 0;
-  for (const double x : values) mean += x / n;
-  double squares = 0;
-  for (const double x : values) squares += (x - mean) * (x - mean);
-  return std::sqrt(squares / (n - 1) / n);
+  return std::sqrt(squares_of(values) / (n - 1) / n);
 }
 
 // The means of the complete blocks of 2^level consecutive samples.
@@ -237,17 +252,11 @@ std::vector<double> block_means(const std::vector<double>& samples, std::size_t 
 
 // Jonsson's sigma^2 and gamma (his Eq. 6) of a series, both over n.
 double variance_over_n(const std::vector<double>& y) {
-  const auto n = static_cast<double>(y.size());
-  double mean = 0;
-  for (const double x : y) mean += x / n;
-  double squares = 0;
-  for (const double x : y) squares += (x - mean) * (x - mean);
-  return squares / n;
+  return squares_of(y) / static_cast<double>(y.size());
 }
 double lag_one(const std::vector<double>& y) {
   const auto n = static_cast<double>(y.size());
-  double mean = 0;
-  for (const double x : y) mean += x / n;
+  const double mean = mean_of(y);
   double sum = 0;
   for (std::size_t t = 0; t + 1 < y.size(); ++t) sum += (y[t] - mean) * (y[t + 1] - mean);
   return sum / n;

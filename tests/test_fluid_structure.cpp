@@ -252,7 +252,8 @@ TEST_SUITE("kinetic-theory") {
       ++bins;
     }
     const double rms = std::sqrt(squares / bins);
-    MESSAGE("root mean square of (value - truth) / error over " << bins << " bins: " << rms);
+    MESSAGE("root mean square of (value - truth) / error over " << bins
+                                                                << " bins: " << rms);
     CHECK(rms > 0.8);
     CHECK(rms < 1.6);
   }

@@ -129,10 +129,10 @@ class BlockingAnalysis {
   struct Level {
     std::size_t blocks = 0;
     double mean = 0;
-    double squares = 0;       // sum of (block mean - mean)^2
-    double products = 0;      // sum of y_t y_{t+1}, y = block mean - origin
-    double first = 0;         // y_1
-    double last = 0;          // y_{n_k}
+    double squares = 0;   // sum of (block mean - mean)^2
+    double products = 0;  // sum of y_t y_{t+1}, y = block mean - origin
+    double first = 0;     // y_1
+    double last = 0;      // y_{n_k}
     bool waiting = false;
     double waiting_value = 0;
   };

@@ -188,7 +188,8 @@ void FluidStructure::take_snapshot(const Gas& gas, double time) {
 // Each bin's error is its blocking error at the level the contact value's
 // analysis chose: the bins are the same snapshots, correlated alike, and one
 // level for all keeps a bin from going without an error bar while its own
-// plateau rule still hesitates (which happens to some bin of a hundred).
+// test still sees its batches correlated (which happens to some bin of a
+// hundred).
 std::vector<CurveBin> FluidStructure::curve(const std::vector<BlockingAnalysis>& bins,
                                             double first_edge,
                                             const BlockingAnalysis& contact) const {
