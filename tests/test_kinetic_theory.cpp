@@ -199,6 +199,34 @@ void check_equation_of_state(double eta, double length, unsigned seed) {
   const double g_reference = gas::hard_disc_fluid_contact_value(eta_inside);
   REQUIRE(std::isfinite(m.pair_contact.error));
   CHECK(std::abs(m.pair_contact.value - g_reference) <= 3 * m.pair_contact.error);
+  // The same three sample by sample (snapshot by snapshot for g): the
+  // walls' middles' push against the bulk's P = Z_ref n_int kT_int, the free
+  // path against Enskog's, g(2a+) against the reference at each snapshot's
+  // own eta_int. Each the difference of the whole run's figures (g: to
+  // within a fifth of its error, the snapshots' eta_int wandering about the
+  // run's), each within three of its own error.
+  CAPTURE(m.pressure_minus_theory.value);
+  CAPTURE(m.pressure_minus_theory.error);
+  CAPTURE(m.mean_free_path_minus_theory.value);
+  CAPTURE(m.mean_free_path_minus_theory.error);
+  CAPTURE(m.pair_contact_minus_theory.value);
+  CAPTURE(m.pair_contact_minus_theory.error);
+  const double bulk_pressure =
+      reference * eta_inside * m.interior_kT.value / std::numbers::pi;
+  CHECK(m.pressure_minus_theory.value ==
+        doctest::Approx(m.wall_middle_pressure.value - bulk_pressure));
+  CHECK(m.mean_free_path_minus_theory.value ==
+        doctest::Approx(m.mean_free_path.value -
+                        gas::enskog_mean_free_path(eta_inside, 1)));
+  for (const gas::Average& difference :
+       {m.pressure_minus_theory, m.mean_free_path_minus_theory,
+        m.pair_contact_minus_theory}) {
+    REQUIRE(std::isfinite(difference.error));
+    CHECK(std::abs(difference.value) <= 3 * difference.error);
+  }
+  CHECK(
+      std::abs(m.pair_contact_minus_theory.value - (m.pair_contact.value - g_reference)) <
+      0.2 * m.pair_contact_minus_theory.error);
   // The contact theorem: the density of centres at a wall times kT is the
   // pressure on it (the walls' middles, away from the corners). The
   // snapshots' strips hold a few balls each, so on these runs the contact

@@ -1,5 +1,6 @@
 // Blocking analysis (beyond the article). See beyond/blocking.hpp for the
-// method (Flyvbjerg and Petersen 1989) and the plateau rule.
+// method (Flyvbjerg and Petersen 1989), the rule (batch means, Schmeiser
+// 1982) and its check (Jonsson 2018).
 #include "beyond/blocking.hpp"
 
 #include <cmath>
@@ -9,9 +10,20 @@ namespace gas {
 
 namespace {
 constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+// The standard normal 99.9 % quantile: Jonsson's test at that level.
+constexpr double test_quantile_z = 3.090232;
 }  // namespace
 
+double chi_squared_quantile(double degrees, double z) {
+  // chi^2_m / m is close to the cube of a normal of mean 1 - 2/(9m) and
+  // variance 2/(9m).
+  const double v = 2 / (9 * degrees);
+  const double root = 1 - v + z * std::sqrt(v);
+  return degrees * root * root * root;
+}
+
 void BlockingAnalysis::add(double x) {
+  if (count_ == 0) origin_ = x;
   ++count_;
   double value = x;
   for (std::size_t k = 0;; ++k) {
@@ -22,6 +34,14 @@ void BlockingAnalysis::add(double x) {
     const double delta = value - level.mean;
     level.mean += delta / static_cast<double>(level.blocks);
     level.squares += delta * (value - level.mean);
+    // Its product with the block before it (Jonsson's gamma).
+    const double y = value - origin_;
+    if (level.blocks == 1) {
+      level.first = y;
+    } else {
+      level.products += level.last * y;
+    }
+    level.last = y;
     // Pair it with the block before it, if one is waiting: their mean is a
     // block of the next level.
     if (!level.waiting) {
@@ -49,29 +69,49 @@ double BlockingAnalysis::level_error(const Level& level) const {
   return std::sqrt(level.squares / (n - 1) / n);
 }
 
+// gamma = (1/n) sum_{t < n} (y_t - m)(y_{t+1} - m), m the mean of the y:
+// expanded, (1/n) [sum y_t y_{t+1} - (n + 1) m^2 + m (y_1 + y_n)].
+double BlockingAnalysis::level_lag_one(const Level& level) const {
+  if (level.blocks < 2) return unknown;
+  const double n = static_cast<double>(level.blocks);
+  const double m = level.mean - origin_;
+  return (level.products - (n + 1) * m * m + m * (level.first + level.last)) / n;
+}
+
 double BlockingAnalysis::naive_error() const {
   return count_ < 2 ? unknown : level_error(levels_[0]);
 }
 
+double BlockingAnalysis::jonsson_m(std::size_t k, std::size_t* terms) const {
+  if (terms != nullptr) *terms = 0;
+  if (k >= levels_.size() || levels_[k].blocks < 2) return unknown;
+  double m = 0;
+  for (std::size_t i = k; i < levels_.size() && levels_[i].blocks >= 2; ++i) {
+    const Level& level = levels_[i];
+    const double n = static_cast<double>(level.blocks);
+    const double sigma2 = level.squares / n;
+    if (terms != nullptr) ++*terms;
+    if (!(sigma2 > 0)) continue;  // equal block means: no correlation to see
+    const double c = (n - 1) * sigma2 / (n * n) + level_lag_one(level);
+    m += n * c * c / (sigma2 * sigma2);
+  }
+  return m;
+}
+
 int BlockingAnalysis::chosen_level() const {
-  // The usable levels: those with at least fewest_blocks blocks. Blocks only
-  // get fewer going up, so they are levels 0 ... top - 1.
+  // Batch means: the highest level with at least fewest_blocks blocks
+  // (levels only get fewer blocks going up).
   std::size_t top = 0;
   while (top < levels_.size() && levels_[top].blocks >= fewest_blocks) ++top;
-  // The lowest level k with confirming_levels usable levels above it, none of
-  // which is above e_k by more than its own uncertainty d_j.
-  for (std::size_t k = 0; k + confirming_levels < top; ++k) {
-    const double e_k = level_error(levels_[k]);
-    bool plateau = true;
-    for (std::size_t j = k + 1; j <= k + confirming_levels && plateau; ++j) {
-      const double e_j = level_error(levels_[j]);
-      const double d_j =
-          e_j / std::sqrt(2 * (static_cast<double>(levels_[j].blocks) - 1));
-      plateau = e_j <= e_k + d_j;
-    }
-    if (plateau) return static_cast<int>(k);
-  }
-  return -1;
+  if (top == 0) return -1;
+  const std::size_t k = top - 1;
+  // Jonsson's test from the level below the batches up (16 to 31 blocks,
+  // enough to see a correlation the batches still carry): are they
+  // uncorrelated?
+  std::size_t terms = 0;
+  const double m = jonsson_m(k > 0 ? k - 1 : 0, &terms);
+  if (!(m < chi_squared_quantile(static_cast<double>(terms), test_quantile_z))) return -1;
+  return static_cast<int>(k);
 }
 
 double BlockingAnalysis::error() const {
@@ -90,10 +130,10 @@ std::vector<BlockingLevel> BlockingAnalysis::levels() const {
   for (const Level& level : levels_) {
     if (level.blocks == 0) break;
     const double e = level_error(level);
-    const double d = level.blocks < 2
-                         ? unknown
-                         : e / std::sqrt(2 * (static_cast<double>(level.blocks) - 1));
-    result.push_back({size, level.blocks, e, d});
+    const double n = static_cast<double>(level.blocks);
+    const bool two = level.blocks >= 2;
+    result.push_back({size, level.blocks, e, two ? e / std::sqrt(2 * (n - 1)) : unknown,
+                      two ? level.squares / n : unknown, level_lag_one(level)});
     size *= 2;
   }
   return result;

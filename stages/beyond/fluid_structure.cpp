@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "beyond/cell_layout.hpp"
+#include "beyond/hard_disc_fluid.hpp"
 
 namespace gas {
 namespace {
@@ -106,6 +107,7 @@ void FluidStructure::restart(double time) {
   events_ = 0;
   pair_contact_.clear();
   wall_contact_.clear();
+  pair_contact_minus_theory_.clear();
   for (BlockingAnalysis& b : pair_bins_) b.clear();
   for (BlockingAnalysis& b : wall_bins_) b.clear();
 }
@@ -175,7 +177,10 @@ void FluidStructure::take_snapshot(const Gas& gas, double time) {
     const double r0 = 2 * a + static_cast<double>(k) * bin_, r1 = r0 + bin_;
     pair_counts_[k] /= inside * density * std::numbers::pi * (r1 * r1 - r0 * r0);
   }
-  pair_contact_.add(fitted(pair_weights_, pair_counts_));
+  const double contact = fitted(pair_weights_, pair_counts_);
+  pair_contact_.add(contact);
+  pair_contact_minus_theory_.add(
+      contact - hard_disc_fluid_contact_value(density * std::numbers::pi * a * a));
   for (std::size_t k = 0; k < pair_bins_.size(); ++k) pair_bins_[k].add(pair_counts_[k]);
 }
 // [/anchor: structure-snapshot]
@@ -183,7 +188,8 @@ void FluidStructure::take_snapshot(const Gas& gas, double time) {
 // Each bin's error is its blocking error at the level the contact value's
 // analysis chose: the bins are the same snapshots, correlated alike, and one
 // level for all keeps a bin from going without an error bar while its own
-// plateau rule still hesitates (which happens to some bin of a hundred).
+// test still sees its batches correlated (which happens to some bin of a
+// hundred).
 std::vector<CurveBin> FluidStructure::curve(const std::vector<BlockingAnalysis>& bins,
                                             double first_edge,
                                             const BlockingAnalysis& contact) const {

@@ -87,6 +87,12 @@ class FluidStructure {
   // (per unit area), fitted from the first contact_bins bins.
   const BlockingAnalysis& pair_contact() const { return pair_contact_; }
   const BlockingAnalysis& wall_contact_density() const { return wall_contact_; }
+  // g(2a+) less the reference's g(2a) at the snapshot's own interior
+  // density, per snapshot: what the interior's wandering density moves in
+  // both cancels (like Z's deviation, lesson 11).
+  const BlockingAnalysis& pair_contact_minus_theory() const {
+    return pair_contact_minus_theory_;
+  }
   // The curves (--structure): empty unless asked for.
   std::vector<CurveBin> pair_curve() const;
   std::vector<CurveBin> wall_profile() const;
@@ -109,7 +115,7 @@ class FluidStructure {
   std::size_t events_ = 0;  // since start_, until spacing_ is known
   // The fits' weights: value at contact = sum of weight_k x bin k.
   std::vector<double> pair_weights_, wall_weights_;
-  BlockingAnalysis pair_contact_, wall_contact_;
+  BlockingAnalysis pair_contact_, wall_contact_, pair_contact_minus_theory_;
   // Per bin: g (pairs, from r = 2a) and n (walls, from d = 0), when curves_.
   std::vector<BlockingAnalysis> pair_bins_, wall_bins_;
   // Scratch, kept between snapshots.

@@ -299,6 +299,13 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return s.interior_speed / s.interior_time / rate;
     case wall_middle_pressure_q:
       return s.push_x_middle / t;
+    case pressure_minus_theory_q:  // against the bulk's P = Z_ref n kT at this
+                                   // stretch's eta and kT (n = eta / (pi a^2))
+      return s.push_x_middle / t - hard_disc_fluid_compressibility(eta) * eta *
+                                       kT_inside / (std::numbers::pi * a2);
+    case mean_free_path_minus_theory_q:
+      return s.interior_speed / s.interior_time / rate -
+             enskog_mean_free_path(eta, radius_);
     case quantity_count:
       break;
   }
@@ -340,6 +347,10 @@ Average& GasStatistics::average_of(MeasuredFigures& m, Quantity q) {
       return m.mean_free_path;
     case wall_middle_pressure_q:
       return m.wall_middle_pressure;
+    case pressure_minus_theory_q:
+      return m.pressure_minus_theory;
+    case mean_free_path_minus_theory_q:
+      return m.mean_free_path_minus_theory;
     case quantity_count:
       break;
   }
@@ -370,6 +381,8 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   const BlockingAnalysis& pair = structure_.pair_contact();
   const BlockingAnalysis& wall = structure_.wall_contact_density();
   m.pair_contact = {pair.mean(), pair.error()};
+  const BlockingAnalysis& pair_difference = structure_.pair_contact_minus_theory();
+  m.pair_contact_minus_theory = {pair_difference.mean(), pair_difference.error()};
   m.wall_contact_pressure = {kT_ * wall.mean(), kT_ * wall.error()};
   // The histogram: the ball-time fraction of each bin, to now.
   const double ball_time = s.duration * static_cast<double>(balls_);

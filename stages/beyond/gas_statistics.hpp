@@ -81,8 +81,13 @@ struct MeasuredFigures {
                                         // sample by sample
   Average mean_free_path;               // the interior's mean speed / its rate (a length)
   Average pair_contact;                 // g(2a+) among the balls of the interior
+  Average pair_contact_minus_theory;    // g(2a+) - the reference's at the snapshot's
+                                        // eta_int, snapshot by snapshot
   Average wall_contact_pressure;  // kT n(contact) at the walls x = 0, A1 (their middles)
   Average wall_middle_pressure;   // the push on those middles: P there
+  Average pressure_minus_theory;  // P there - Z_ref n_int kT_int, sample by sample
+  Average mean_free_path_minus_theory;  // the interior's path - Enskog's at eta_int,
+                                        // sample by sample
   std::vector<double> speed_fractions;  // the histogram: ball-time fractions per bin
   double bin_width = 0;                 // of its bins
   double fraction_beyond = 0;           // faster than its last bin
@@ -159,6 +164,8 @@ class GasStatistics final : public CollisionObserver {
     collision_rate_minus_theory_q,
     mean_free_path_q,
     wall_middle_pressure_q,
+    pressure_minus_theory_q,
+    mean_free_path_minus_theory_q,
     quantity_count
   };
   double value_of(Quantity q, const Sums& s) const;

@@ -340,6 +340,12 @@ constexpr Column columns[] = {
     {"g_contact_theory_error", kinetic_value<&K::pair_contact_theory_error>},
     {"wall_contact_pressure", measured_value<&M::wall_contact_pressure>},
     {"wall_contact_pressure_error", measured_error<&M::wall_contact_pressure>},
+    {"pressure_deviation", deviation_value<&M::pressure_minus_theory>},
+    {"pressure_deviation_error", deviation_error<&M::pressure_minus_theory>},
+    {"mean_free_path_deviation", deviation_value<&M::mean_free_path_minus_theory>},
+    {"mean_free_path_deviation_error", deviation_error<&M::mean_free_path_minus_theory>},
+    {"g_contact_deviation", deviation_value<&M::pair_contact_minus_theory>},
+    {"g_contact_deviation_error", deviation_error<&M::pair_contact_minus_theory>},
 };
 
 }  // namespace
