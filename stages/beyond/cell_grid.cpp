@@ -246,8 +246,7 @@ void CellGrid::predict(int seat, int skip, int lowest) {
 
 // The ball's key moved to its day in the calendar.
 void CellGrid::schedule(int seat) {
-  const Prediction earliest = key(seat);
-  calendar_.schedule(seat, earliest.time, place(seat, earliest));
+  calendar_.schedule(seat, key(seat).time);
 }
 
 // A crossing: the ball moves to the next cell in the books, is predicted
@@ -348,7 +347,9 @@ Collision CellGrid::first(const Gas& gas) {
   if (collisions_since_seating_ > reseat_collisions * gas.balls.size())
     rebuild(gas, limits_);
   // The ball whose next event is the earliest; none: nothing will ever collide.
-  for (int seat = calendar_.earliest(); seat != 0; seat = calendar_.earliest()) {
+  const KeyPlaces places(this);
+  for (int seat = calendar_.earliest(places); seat != 0;
+       seat = calendar_.earliest(places)) {
     const Prediction p = key(seat);
     if (!current(p)) {  // its partner has collided since: dropped
       drop(seat, [&](const Prediction& q) { return !current(q); });

@@ -210,6 +210,14 @@ class CellGrid final : public FirstCollisionFinder {
   LargePageVector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
   std::vector<std::int32_t> neighbours_;        // gather's answer: balls of a block
   EventCalendar calendar_;  // every ball with an event, keyed by the earliest
+  // The calendar's question on a tie of times: the place of a ball's key.
+  struct KeyPlaces final : EventCalendar::Places {
+    explicit KeyPlaces(const CellGrid* of) : grid(of) {}
+    const CellGrid* grid;
+    std::uint64_t place(int seat) const override {
+      return grid->place(seat, grid->key(seat));
+    }
+  };
   std::uint64_t collisions_since_seating_ = 0;  // ball collisions since the last deal
 };
 
