@@ -56,34 +56,26 @@ double time_to_wall(double position, double velocity, double low, double high);
 double time_of_contact(const Ball& p, const Ball& q, double diameter);
 // [/anchor: time-of-contact-declaration]
 
-// The scan's time for a ball with the row `ball` to reach a wall of kind K = 1
+// The scan's time for ball `number` (1..N) to reach a wall of kind K = 1
 // (y = a or y = A2 - a) or K = 2 (x = a or x = A1 - a): its time plus
-// time_to_wall along that axis; and the same for ball `number` (1..N) of the
-// gas. Every way of stage 4 computes a wall's time with this one expression,
-// so all of them get the same bits.
+// time_to_wall along that axis. Every way of stage 4 computes a wall's time
+// with this one expression, so all of them get the same bits.
 // [anchor: wall-time]
-inline double wall_time(const Ball& ball, const CentreLimits& limits,
+inline double wall_time(const Gas& gas, const CentreLimits& limits, int number,
                         CollisionKind kind) {
+  const Ball& ball = gas.balls[static_cast<std::size_t>(number - 1)];
   return kind == CollisionKind::horizontal_wall
              ? ball.since + time_to_wall(ball.y, ball.vy, limits.y_min, limits.y_max)
              : ball.since + time_to_wall(ball.x, ball.vx, limits.x_min, limits.x_max);
-}
-inline double wall_time(const Gas& gas, const CentreLimits& limits, int number,
-                        CollisionKind kind) {
-  return wall_time(gas.balls[static_cast<std::size_t>(number - 1)], limits, kind);
 }
 // [/anchor: wall-time]
 
 // The scan's time for balls N3 < N4 to meet: time_of_contact(N3, N4), in that
 // order (the order of the arguments matters to the last bit, through the sums
-// in its round-off floor), for every way of stage 4 alike; from the rows of
-// N3 and N4 and the radius a, or from the gas.
-inline double pair_time(const Ball& n3, const Ball& n4, double radius) {
-  return time_of_contact(n3, n4, 2 * radius);
-}
+// in its round-off floor), for every way of stage 4 alike.
 inline double pair_time(const Gas& gas, int n3, int n4) {
-  return pair_time(gas.balls[static_cast<std::size_t>(n3 - 1)],
-                   gas.balls[static_cast<std::size_t>(n4 - 1)], gas.radius);
+  return time_of_contact(gas.balls[static_cast<std::size_t>(n3 - 1)],
+                         gas.balls[static_cast<std::size_t>(n4 - 1)], 2 * gas.radius);
 }
 
 // The last line of the scan: round-off can place a collision a hair before

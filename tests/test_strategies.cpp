@@ -23,15 +23,12 @@
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <memory>
 #include <random>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "beyond/cell_grid.hpp"
@@ -364,52 +361,6 @@ TEST_SUITE("strategies") {
     // small gases use, and a calendar laid out from a random start.
     const Gas big = scene_text("a 1\nT0 1\nA1 458\nA2 458\nrandom 20000 13 1\n");
     CHECK(check_same_runs(big, 2000, {Strategy::table, Strategy::grid}) == 2000);
-  }
-
-  TEST_CASE(
-      "strategies: the grid seats the balls cell by cell and deals the seats afresh") {
-    // (The runs above span deals: the 300 balls' 3000 collisions pass
-    // 8 x 300, the lattices' 5000 pass 8 x 108; those runs are the scan's.)
-    const Gas three_hundred = scene_text("a 1\nT0 1\nA1 56\nA2 56\nrandom 300 11 1\n");
-    auto made = std::make_unique<gas::CellGrid>();
-    gas::CellGrid& grid = *made;
-    gas::Control control = gas::start_control(three_hundred, std::move(made));
-    grid.rebuild(control.gas, control.limits);
-    const int n = static_cast<int>(control.gas.balls.size());
-    // The cell of ball `number` now, as the order of the seats counts cells:
-    // strips four cells high, column after column, then the cell's line.
-    auto order_of_cell = [&](int number) {
-      const Ball& b = control.gas.balls[static_cast<std::size_t>(number - 1)];
-      const int column = std::clamp(static_cast<int>(std::floor(b.x / grid.cell_width())),
-                                    0, grid.columns() - 1);
-      const int line = std::clamp(static_cast<int>(std::floor(b.y / grid.cell_height())),
-                                  0, grid.rows() - 1);
-      return std::tuple{(line + 1) / 4, column, (line + 1) % 4, number};
-    };
-    std::vector<int> at_seat(static_cast<std::size_t>(n) + 1, 0);  // by seat: number
-    for (int number = 1; number <= n; ++number) {
-      const int seat = grid.seat_of(number);
-      REQUIRE(seat >= 1);
-      REQUIRE(seat <= n);
-      CHECK(at_seat[static_cast<std::size_t>(seat)] == 0);  // each seat once
-      at_seat[static_cast<std::size_t>(seat)] = number;
-    }
-    bool in_order = true;
-    for (int seat = 1; seat < n; ++seat)
-      in_order =
-          in_order && order_of_cell(at_seat[static_cast<std::size_t>(seat)]) <
-                          order_of_cell(at_seat[static_cast<std::size_t>(seat + 1)]);
-    CHECK(in_order);
-    // After more than reseat_collisions collisions a ball, the seats were dealt
-    // again: for the cells the balls are in by then.
-    const std::vector<int> before = at_seat;
-    while (control.ball_collisions <=
-           static_cast<long long>(gas::CellGrid::reseat_collisions) * n + n)
-      gas::take_step(control, gas::never, nullptr);
-    int moved = 0;
-    for (int number = 1; number <= n; ++number)
-      moved += before[static_cast<std::size_t>(grid.seat_of(number))] != number;
-    CHECK(moved > n / 2);
   }
 
   TEST_CASE(

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "beyond/event_order.hpp"
 
@@ -19,13 +18,13 @@ constexpr std::uint64_t scan_event = std::uint64_t{1} << 63;
 // ---- a ball's list of predictions: the record's first few, then the rest
 
 // (The earliest stays at the front: the list's key.)
-void CellGrid::add(int seat, Prediction p) {
-  Record& r = record(seat);
-  if (r.listed > 0 && earlier(seat, p, r.first[0])) std::swap(p, r.first[0]);
+void CellGrid::add(int ball, Prediction p) {
+  Record& r = record(ball);
+  if (r.listed > 0 && earlier(ball, p, r.first[0])) std::swap(p, r.first[0]);
   if (r.listed < predictions_kept) {
     r.first[r.listed] = p;
   } else {
-    more_predictions_[seat].push_back(p);
+    more_predictions_[ball].push_back(p);
   }
   ++r.listed;
 }
@@ -33,13 +32,13 @@ void CellGrid::add(int seat, Prediction p) {
 // Drops the predictions for which `dropped` says so (the others close up),
 // and moves the earliest of the rest to the front.
 template <typename Dropped>
-void CellGrid::drop(int seat, Dropped dropped) {
-  Record& r = record(seat);
+void CellGrid::drop(int ball, Dropped dropped) {
+  Record& r = record(ball);
   const std::uint32_t listed = r.listed;
   // The rest of the list, if it is longer than the record holds (looked up
   // once, not for each prediction).
   std::vector<Prediction>* more =
-      listed > predictions_kept ? &more_predictions_.at(seat) : nullptr;
+      listed > predictions_kept ? &more_predictions_.at(ball) : nullptr;
   auto at = [&](std::uint32_t i) -> Prediction& {
     return i < predictions_kept ? r.first[i] : (*more)[i - predictions_kept];
   };
@@ -49,27 +48,27 @@ void CellGrid::drop(int seat, Dropped dropped) {
     if (dropped(p)) continue;
     Prediction& slot = at(kept++);
     slot = p;
-    if (earlier(seat, slot, r.first[0])) std::swap(slot, r.first[0]);
+    if (earlier(ball, slot, r.first[0])) std::swap(slot, r.first[0]);
   }
   r.listed = kept;
   if (more != nullptr) {
     if (kept > predictions_kept) {
       more->resize(kept - predictions_kept);
     } else {
-      more_predictions_.erase(seat);
+      more_predictions_.erase(ball);
     }
   }
 }
 
 // The whole list dropped.
-void CellGrid::forget(int seat) {
-  if (record(seat).listed > predictions_kept) more_predictions_.erase(seat);
-  record(seat).listed = 0;
+void CellGrid::forget(int ball) {
+  if (record(ball).listed > predictions_kept) more_predictions_.erase(ball);
+  record(ball).listed = 0;
 }
 
 // The ball's key: the earliest of its list, or `never`.
-CellGrid::Prediction CellGrid::key(int seat) const {
-  const Record& r = record(seat);
+CellGrid::Prediction CellGrid::key(int ball) const {
+  const Record& r = record(ball);
   return r.listed > 0 ? r.first[0] : Prediction{};
 }
 
@@ -84,10 +83,8 @@ std::uint32_t CellGrid::longest_list() const {
 // The place of a ball's prediction in the calendar's order at equal times:
 // crossings first (they change no row of R, only the grid's books, and may
 // bring in a prediction that belongs before the collisions at that time),
-// then the events of the scan in the scan's order. (By the balls' numbers in
-// the scene, not their seats.)
-std::uint64_t CellGrid::place(int seat, const Prediction& p) const {
-  const int ball = number(seat);
+// then the events of the scan in the scan's order.
+std::uint64_t CellGrid::place(int ball, const Prediction& p) const {
   switch (p.partner) {
     case cross_x:
       return static_cast<std::uint64_t>(ball) << 1;
@@ -98,15 +95,14 @@ std::uint64_t CellGrid::place(int seat, const Prediction& p) const {
     case vertical_wall:
       return scan_event | scan_place(CollisionKind::vertical_wall, ball, 0);
     default:
-      return scan_event |
-             scan_place(CollisionKind::balls, std::min(ball, number(p.partner)),
-                        std::max(ball, number(p.partner)));
+      return scan_event | scan_place(CollisionKind::balls, std::min(ball, p.partner),
+                                     std::max(ball, p.partner));
   }
 }
 
 // Does p come before q in the scan's order (time, then place)?
-inline bool CellGrid::earlier(int seat, const Prediction& p, const Prediction& q) const {
-  return p.time < q.time || (p.time == q.time && place(seat, p) < place(seat, q));
+inline bool CellGrid::earlier(int ball, const Prediction& p, const Prediction& q) const {
+  return p.time < q.time || (p.time == q.time && place(ball, p) < place(ball, q));
 }
 
 // Made when the partner had the collisions it still has? (A ball's own
@@ -117,26 +113,25 @@ inline bool CellGrid::current(const Prediction& p) const {
 
 // ---- the cells' lists of balls
 
-void CellGrid::insert(int seat, int column, int line) {
-  Record& r = record(seat);
+void CellGrid::insert(int ball, int column, int line) {
+  Record& r = record(ball);
   std::int32_t& first = head(column, line);
   r.column = column;
   r.line = line;
-  next_in_cell_[static_cast<std::size_t>(seat)] = first;
-  first = seat;
+  next_in_cell_[static_cast<std::size_t>(ball)] = first;
+  first = ball;
 }
 
 // (A cell holds a ball or two: its list is walked to find the one before.)
-void CellGrid::remove(int seat) {
-  std::int32_t* link = &head(record(seat).column, record(seat).line);
-  while (*link != seat) link = &next_in_cell_[static_cast<std::size_t>(*link)];
-  *link = next_in_cell_[static_cast<std::size_t>(seat)];
+void CellGrid::remove(int ball) {
+  std::int32_t* link = &head(record(ball).column, record(ball).line);
+  while (*link != ball) link = &next_in_cell_[static_cast<std::size_t>(*link)];
+  *link = next_in_cell_[static_cast<std::size_t>(ball)];
 }
 
 // Gathers into `neighbours_` the balls of a block of cells, `across` cells by
 // `down` from the cell (column, line); returns how many. (The frame of empty
-// cells around the table lets the block reach one cell beyond an edge; the
-// cells of a column within a strip are numbered one after another.) A
+// cells around the table lets the block reach one cell beyond an edge.) A
 // cell's list is walked two steps without asking whether it has ended (the
 // list's end, ball 0, leads on to ball 0 again, and the count moves on only
 // for a ball): whether a cell holds none, one or two balls is a coin toss the
@@ -150,7 +145,7 @@ std::size_t CellGrid::gather(int column, int line) {
   for (int l = line; l < line + down; ++l) {
     const std::int32_t* heads = &head(column, l);
     for (int c = 0; c < across; ++c) {
-      std::int32_t k = heads[c * strip_lines];  // the cell's first ball, or 0
+      std::int32_t k = heads[c];  // the cell's first ball, or 0
       out[found] = k;
       found += k != 0;
       k = next[k];  // its second, or 0
@@ -176,45 +171,45 @@ std::size_t CellGrid::gather(int column, int line) {
 // last one that way? Then a wall is ahead of it, and no cell crossing.
 // (Asked with & and |, not && and ||: the sign of the velocity is a coin
 // toss the processor would guess wrong.)
-bool CellGrid::edge_ahead(int seat, bool along_x) const {
-  const Record& r = record(seat);
-  const double velocity = along_x ? row(seat).vx : row(seat).vy;
+bool CellGrid::edge_ahead(int ball, bool along_x) const {
+  const Record& r = record(ball);
+  const double velocity = along_x ? row(ball).vx : row(ball).vy;
   const int cell = along_x ? r.column : r.line;
   const int last = (along_x ? cells_.columns : cells_.rows) - 1;
   return ((velocity > 0) & (cell == last)) | ((velocity < 0) & (cell == 0));
 }
 
-void CellGrid::add_wall(int seat, std::int32_t wall) {
-  const double time = wall_time(row(seat), limits_,
+void CellGrid::add_wall(int ball, std::int32_t wall) {
+  const double time = wall_time(*gas_, limits_, ball,
                                 wall == horizontal_wall ? CollisionKind::horizontal_wall
                                                         : CollisionKind::vertical_wall);
-  if (time < never) add(seat, {time, wall, 0});
+  if (time < never) add(ball, {time, wall, 0});
 }
 
-// A meeting, computed as the scan computes it: pair_time(N3, N4) with N3 < N4
-// by the balls' numbers in the scene.
-void CellGrid::add_pair(int seat, int other) {
-  // (N3's seat found without a branch, which is lower being a coin toss: the
-  // xor of the two seats, less one of them, is the other.)
-  const int n3 = number(seat) < number(other) ? seat : other, n4 = seat ^ other ^ n3;
-  const double time = pair_time(row(n3), row(n4), radius_);
-  if (time < never) add(seat, {time, other, count_[static_cast<std::size_t>(other)]});
+// A meeting, computed as the scan computes it: time_of_contact(N3, N4) with
+// N3 < N4.
+void CellGrid::add_pair(int ball, int other) {
+  // (N4 found without a branch, which is lower being a coin toss: the xor of
+  // the two numbers, less one of them, is the other.)
+  const int n3 = std::min(ball, other), n4 = ball ^ other ^ n3;
+  const double time = pair_time(*gas_, n3, n4);
+  if (time < never) add(ball, {time, other, count_[static_cast<std::size_t>(other)]});
 }
 
 // The next time the centre leaves its cell: through the side ahead of it in
 // x or in y, whichever comes first (none at the table's edge: the wall comes
 // first).
-CellGrid::Prediction CellGrid::next_crossing(int seat) const {
-  const Record& r = record(seat);
-  const Ball& row = this->row(seat);
+CellGrid::Prediction CellGrid::next_crossing(int ball) const {
+  const Record& r = record(ball);
+  const Ball& row = this->row(ball);
   // The side ahead along x: the cell's right side if vx > 0, its left if
   // vx < 0; none if vx = 0 or at the table's edge. The same along y. Both
   // times are computed and the answer selected, not branched on: the signs
   // of vx and vy are coin tosses the processor would guess wrong. (A time
   // divided by vx = 0 is infinite or not a number, and never selected.)
   const bool right = row.vx > 0, up = row.vy > 0;
-  const bool open_x = (row.vx != 0) & !edge_ahead(seat, true);
-  const bool open_y = (row.vy != 0) & !edge_ahead(seat, false);
+  const bool open_x = (row.vx != 0) & !edge_ahead(ball, true);
+  const bool open_y = (row.vy != 0) & !edge_ahead(ball, false);
   const double to_x =
       row.since + ((r.column + right) * cells_.cell_width - row.x) / row.vx;
   const double to_y = row.since + ((r.line + up) * cells_.cell_height - row.y) / row.vy;
@@ -225,147 +220,107 @@ CellGrid::Prediction CellGrid::next_crossing(int seat) const {
 
 // A ball's list made afresh (its row of R is new): the walls along its cell's
 // edges that it moves towards, the balls of the 3 x 3 cells around it (but
-// `skip`, and only those seated from `lowest`), its next crossing.
-void CellGrid::predict(int seat, int skip, int lowest) {
-  forget(seat);
-  if (edge_ahead(seat, false)) add_wall(seat, horizontal_wall);
-  if (edge_ahead(seat, true)) add_wall(seat, vertical_wall);
-  const std::size_t found = gather<3, 3>(record(seat).column - 1, record(seat).line - 1);
+// `skip`, and only those numbered from `lowest`), its next crossing.
+void CellGrid::predict(int ball, int skip, int lowest) {
+  forget(ball);
+  if (edge_ahead(ball, false)) add_wall(ball, horizontal_wall);
+  if (edge_ahead(ball, true)) add_wall(ball, vertical_wall);
+  const std::size_t found = gather<3, 3>(record(ball).column - 1, record(ball).line - 1);
   // Set aside the ball itself, `skip` and those below `lowest`, again by
   // arithmetic rather than by a branch.
   std::size_t kept = 0;
   for (std::size_t i = 0; i < found; ++i) {
     const std::int32_t k = neighbours_[i];
     neighbours_[kept] = k;
-    kept += static_cast<std::size_t>((k != seat) & (k != skip) & (k >= lowest));
+    kept += static_cast<std::size_t>((k != ball) & (k != skip) & (k >= lowest));
   }
-  for (std::size_t i = 0; i < kept; ++i) add_pair(seat, neighbours_[i]);
-  const Prediction crossing = next_crossing(seat);
-  if (crossing.time < never) add(seat, crossing);
+  for (std::size_t i = 0; i < kept; ++i) add_pair(ball, neighbours_[i]);
+  const Prediction crossing = next_crossing(ball);
+  if (crossing.time < never) add(ball, crossing);
 }
 
 // The ball's key moved to its day in the calendar.
-void CellGrid::schedule(int seat) {
-  calendar_.schedule(seat, key(seat).time);
+void CellGrid::schedule(int ball) {
+  calendar_.schedule(ball, key(ball).time);
 }
 
 // A crossing: the ball moves to the next cell in the books, is predicted
 // against the balls of the cells that have just become its neighbours, learns
 // of the wall if the new cell lies along it, and gets its next crossing.
-void CellGrid::cross(int seat, bool along_x) {
-  const Record& r = record(seat);
-  const int step = (along_x ? row(seat).vx : row(seat).vy) > 0 ? 1 : -1;
+void CellGrid::cross(int ball, bool along_x) {
+  const Record& r = record(ball);
+  const int step = (along_x ? row(ball).vx : row(ball).vy) > 0 ? 1 : -1;
   const int column = r.column + (along_x ? step : 0);
   const int line = r.line + (along_x ? 0 : step);
-  remove(seat);
-  insert(seat, column, line);
-  drop(seat,
+  remove(ball);
+  insert(ball, column, line);
+  drop(ball,
        [](const Prediction& p) { return p.partner == cross_x || p.partner == cross_y; });
   // The new neighbours: the column (or row of cells) one further on.
   const std::size_t found = along_x ? gather<1, 3>(column + step, line - 1)
                                     : gather<3, 1>(column - 1, line + step);
-  for (std::size_t i = 0; i < found; ++i) add_pair(seat, neighbours_[i]);
-  if (edge_ahead(seat, along_x))
-    add_wall(seat, along_x ? vertical_wall : horizontal_wall);
-  const Prediction crossing = next_crossing(seat);
-  if (crossing.time < never) add(seat, crossing);
-  schedule(seat);
-}
-
-// ---- the seats
-
-// The seats dealt in the order of the cells (their cell_index), and within a
-// cell by number; the cells' lists made; the rows copied to the seats. A
-// counting sort, with the cells' heads as its counters: how many balls each
-// cell holds, then where its first seat is, then the seats themselves.
-void CellGrid::seat_in_cell_order(const Gas& gas) {
-  const int count = static_cast<int>(gas.balls.size());
-  auto cell_of = [&](const Ball& ball) {
-    const Point centre = centre_at(ball, gas.time);
-    return std::pair{cells_.column_of(centre.x), cells_.row_of(centre.y)};
-  };
-  std::fill(head_.begin(), head_.end(), 0);
-  for (const Ball& ball : gas.balls) {
-    const auto [column, line] = cell_of(ball);
-    ++head(column, line);
-  }
-  std::int32_t seated = 0;  // the seats before this cell's
-  for (std::int32_t& cell : head_) seated += std::exchange(cell, seated);
-  for (int ball = 1; ball <= count; ++ball) {
-    const Ball& r = gas.balls[static_cast<std::size_t>(ball - 1)];
-    const auto [column, line] = cell_of(r);
-    const std::int32_t seat = ++head(column, line);
-    seat_[static_cast<std::size_t>(ball)] = seat;
-    number_[static_cast<std::size_t>(seat)] = ball;
-    rows_[static_cast<std::size_t>(seat)] = r;
-  }
-  // The cells' lists (each in the order of its seats, the lowest first).
-  std::fill(head_.begin(), head_.end(), 0);
-  for (int seat = count; seat >= 1; --seat) {
-    const auto [column, line] = cell_of(row(seat));
-    insert(seat, column, line);
-  }
+  for (std::size_t i = 0; i < found; ++i) add_pair(ball, neighbours_[i]);
+  if (edge_ahead(ball, along_x))
+    add_wall(ball, along_x ? vertical_wall : horizontal_wall);
+  const Prediction crossing = next_crossing(ball);
+  if (crossing.time < never) add(ball, crossing);
+  schedule(ball);
 }
 
 // ---- the three calls
 
 void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   limits_ = limits;
-  radius_ = gas.radius;
   const auto n = gas.balls.size();
   // Cells at least 2a (1 + margin) wide, and not many more cells than balls
   // (a huge table with a few balls needs few cells).
   cells_ = lay_out_cells(gas.width, gas.height, 2 * gas.radius * (1 + margin),
                          4.0 * static_cast<double>(n) + 16);
-  strip_size_ = static_cast<std::size_t>(cells_.columns + 2) << strip_shift;
-  const std::size_t strips =
-      (static_cast<std::size_t>(cells_.rows + 2) + strip_lines - 1) >> strip_shift;
 
   records_.assign(n + 1, Record{});
-  rows_.assign(n + 1, Ball{});
-  number_.assign(n + 1, 0);
-  seat_.assign(n + 1, 0);
   more_predictions_.clear();
   count_.assign(n + 1, 0);
   next_in_cell_.assign(n + 1, 0);
-  head_.assign(strips * strip_size_, 0);
+  head_.assign(static_cast<std::size_t>(cells_.columns + 2) *
+                   static_cast<std::size_t>(cells_.rows + 2),
+               0);
   neighbours_.assign(2 * 9, 0);  // two for each of 3 x 3 cells; more if need be
-  seat_in_cell_order(gas);
-  // Each pair once, in the list of its lower-seated ball.
-  calendar_.reset(n);
+  gas_ = &gas;
   const int count = static_cast<int>(n);
-  for (int seat = 1; seat <= count; ++seat) {
-    predict(seat, 0, seat + 1);
-    schedule(seat);
+  for (int ball = 1; ball <= count; ++ball) {
+    const Point centre = centre_at(row(ball), gas.time);
+    insert(ball, cells_.column_of(centre.x), cells_.row_of(centre.y));
   }
-  collisions_since_seating_ = 0;
+  // Each pair once, in the list of its lower-numbered ball.
+  calendar_.reset(n);
+  for (int ball = 1; ball <= count; ++ball) {
+    predict(ball, 0, ball + 1);
+    schedule(ball);
+  }
 }
 
 // [anchor: grid-first]
 Collision CellGrid::first(const Gas& gas) {
-  // Now and then the seats dealt afresh, in the order of the cells now.
-  if (collisions_since_seating_ > reseat_collisions * gas.balls.size())
-    rebuild(gas, limits_);
+  gas_ = &gas;
   // The ball whose next event is the earliest; none: nothing will ever collide.
   const KeyPlaces places(this);
-  for (int seat = calendar_.earliest(places); seat != 0;
-       seat = calendar_.earliest(places)) {
-    const Prediction p = key(seat);
+  for (int ball = calendar_.earliest(places); ball != 0;
+       ball = calendar_.earliest(places)) {
+    const Prediction p = key(ball);
     if (!current(p)) {  // its partner has collided since: dropped
-      drop(seat, [&](const Prediction& q) { return !current(q); });
-      schedule(seat);
+      drop(ball, [&](const Prediction& q) { return !current(q); });
+      schedule(ball);
     } else if (p.partner == cross_x || p.partner == cross_y) {
-      cross(seat, p.partner == cross_x);
+      cross(ball, p.partner == cross_x);
     } else if (p.partner > 0) {
-      const int ball = number(seat), other = number(p.partner);
-      return due_from(
-          {p.time, CollisionKind::balls, std::min(ball, other), std::max(ball, other)},
-          gas.time);
+      return due_from({p.time, CollisionKind::balls, std::min(ball, p.partner),
+                       std::max(ball, p.partner)},
+                      gas.time);
     } else {
       const CollisionKind wall = p.partner == horizontal_wall
                                      ? CollisionKind::horizontal_wall
                                      : CollisionKind::vertical_wall;
-      return due_from({p.time, wall, number(seat), 0}, gas.time);
+      return due_from({p.time, wall, ball, 0}, gas.time);
     }
   }
   return Collision{};  // K = 0
@@ -376,24 +331,16 @@ Collision CellGrid::first(const Gas& gas) {
 void CellGrid::update(const Gas& gas, const Collision& done) {
   if (done.kind == CollisionKind::none) return;
   const bool pair = done.kind == CollisionKind::balls;
-  // The new rows copied to the balls' seats.
-  const int first = seat_[static_cast<std::size_t>(done.first)];
-  const int second = pair ? seat_[static_cast<std::size_t>(done.second)] : 0;
-  rows_[static_cast<std::size_t>(first)] =
-      gas.balls[static_cast<std::size_t>(done.first - 1)];
-  if (pair)
-    rows_[static_cast<std::size_t>(second)] =
-        gas.balls[static_cast<std::size_t>(done.second - 1)];
+  gas_ = &gas;
   // The collision counted: predictions of meetings with these balls are out
   // of date.
-  ++count_[static_cast<std::size_t>(first)];
-  if (pair) ++count_[static_cast<std::size_t>(second)];
-  collisions_since_seating_ += pair;
-  predict(first, 0, 1);
-  schedule(first);
+  ++count_[static_cast<std::size_t>(done.first)];
+  if (pair) ++count_[static_cast<std::size_t>(done.second)];
+  predict(done.first, 0, 1);
+  schedule(done.first);
   if (pair) {
-    predict(second, first, 1);  // the pair itself is in N1's list
-    schedule(second);
+    predict(done.second, done.first, 1);  // the pair itself is in N1's list
+    schedule(done.second);
   }
 }
 // [/anchor: grid-update]

@@ -26,16 +26,8 @@
 // memory, a wait worth hundreds of arithmetic steps. So the grid keeps its
 // books small: a ball's cell and first predictions in one record of a cache
 // line, the collision counts and the cells' lists in arrays of 4-byte
-// numbers, all in large pages (beyond/large_pages.hpp). And it keeps them in
-// the order of the cells, not of the scene's numbers: it gives every ball a
-// seat, its own number for it, counting cell by cell (in strips four cells
-// high, column after column), and keeps a copy of each ball's row of R at its
-// seat. The balls a ball is compared with, those of the 3 x 3 cells around
-// it, then sit a few seats from it, and their books share the cache lines
-// that the event has fetched already. As the balls wander, their seats are
-// dealt afresh now and then (every `reseat_collisions` collisions a ball,
-// by `rebuild`). The scene's numbers stay what everyone else sees: in the
-// collisions the grid gives, and in the order of ties.
+// numbers, all in large pages (beyond/large_pages.hpp); the rows of R it
+// reads from the gas.
 //
 // And a processor guesses which way each `if` goes, long before it knows;
 // a wrong guess throws away some fifteen steps of work. Whether a cell holds
@@ -46,12 +38,9 @@
 //
 // Beyond the article: the article scans every wall and every pair for each
 // collision. The answer here is the scan's, bit for bit, ties included: the
-// predictions are stage 4's wall_time and pair_time on copies of the same
-// rows of R (a crossing never rewrites a row), and events are ordered as the
-// scan meets them (beyond/event_order.hpp, by the scene's numbers), crossings
-// first. Dealing the seats afresh changes no answer: the predictions made
-// then are those the grid held, each pair's time being computed from the
-// same two rows.
+// predictions are stage 4's time_to_wall and time_of_contact on the same rows
+// of R (a crossing never rewrites a row), and events are ordered as the scan
+// meets them (beyond/event_order.hpp), crossings first.
 // Lesson: lessons/10-scaling.md
 //
 // Assumptions: between two calls of `first`, the gas changes only by the
@@ -108,21 +97,10 @@ class CellGrid final : public FirstCollisionFinder {
   // `more_predictions_`.
   static constexpr std::uint32_t predictions_kept = 3;
 
-  // The seats are dealt afresh after this many collisions a ball (a ball
-  // takes part in two collisions for each): by then a ball has wandered a
-  // few cells from where it was seated. A deal costs about what a third of a
-  // collision a ball does (every ball predicted afresh), so 3 to 4 % of the
-  // time, also where all the books fit in the caches anyway (N = 10^3).
-  static constexpr std::uint64_t reseat_collisions = 8;
-
-  // The seat of ball `number` (1..N) now, for tests.
-  int seat_of(int number) const { return seat_[static_cast<std::size_t>(number)]; }
-
  private:
-  // One prediction in a ball's list: a meeting with the ball at seat
-  // `partner` (predicted when the partner had had `partner_count`
-  // collisions), or an event of the ball alone, coded by a `partner` of 0 or
-  // less.
+  // One prediction in a ball's list: a meeting with the ball `partner`
+  // (predicted when the partner had had `partner_count` collisions), or an
+  // event of the ball alone, coded by a `partner` of 0 or less.
   struct Prediction {
     double time = never;
     std::int32_t partner = 0;
@@ -142,70 +120,56 @@ class CellGrid final : public FirstCollisionFinder {
   };
   static_assert(sizeof(Record) == 64, "a record is one cache line");
 
-  // Everything below is by seat (1..N; 0 unused), but for `seat_`.
-  const Ball& row(int seat) const {  // its row of R (the grid's copy)
-    return rows_[static_cast<std::size_t>(seat)];
+  const Ball& row(int ball) const {  // its row of R
+    return gas_->balls[static_cast<std::size_t>(ball - 1)];
   }
-  int number(int seat) const {  // its number in the scene (N1, N2)
-    return number_[static_cast<std::size_t>(seat)];
+  Record& record(int ball) { return records_[static_cast<std::size_t>(ball)]; }
+  const Record& record(int ball) const {
+    return records_[static_cast<std::size_t>(ball)];
   }
-  Record& record(int seat) { return records_[static_cast<std::size_t>(seat)]; }
-  const Record& record(int seat) const {
-    return records_[static_cast<std::size_t>(seat)];
-  }
-  // Cells are numbered in strips `strip_lines` cells high, column after
-  // column within a strip, in a frame one cell wider on every side: the
-  // 3 x 3 cells around a cell lie in one or two runs of a dozen numbers.
-  static constexpr int strip_shift = 2;
-  static constexpr int strip_lines = 1 << strip_shift;
+  // Cells are numbered row by row in a frame one cell wider on every side.
   std::size_t cell_index(int column, int line) const {
-    const auto framed_column = static_cast<std::size_t>(column + 1);
-    const auto framed_line = static_cast<std::size_t>(line + 1);
-    return (framed_line >> strip_shift) * strip_size_ + (framed_column << strip_shift) +
-           (framed_line & (strip_lines - 1));
+    return static_cast<std::size_t>(line + 1) *
+               static_cast<std::size_t>(cells_.columns + 2) +
+           static_cast<std::size_t>(column + 1);
   }
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
 
   // A ball's list of predictions.
-  void add(int seat, Prediction p);  // (keeps the earliest at the front)
+  void add(int ball, Prediction p);  // (keeps the earliest at the front)
   template <typename Dropped>
-  void drop(int seat, Dropped dropped);
-  void forget(int seat);
-  Prediction key(int seat) const;
+  void drop(int ball, Dropped dropped);
+  void forget(int ball);
+  Prediction key(int ball) const;
 
-  std::uint64_t place(int seat, const Prediction& p) const;
+  std::uint64_t place(int ball, const Prediction& p) const;
   bool current(const Prediction& p) const;
-  bool earlier(int seat, const Prediction& p, const Prediction& q) const;
+  bool earlier(int ball, const Prediction& p, const Prediction& q) const;
 
-  void seat_in_cell_order(const Gas& gas);
-  void predict(int seat, int skip, int lowest);
-  void add_pair(int seat, int other);
-  void add_wall(int seat, std::int32_t wall);
-  bool edge_ahead(int seat, bool along_x) const;
-  Prediction next_crossing(int seat) const;
-  void cross(int seat, bool along_x);
-  void schedule(int seat);
-  void insert(int seat, int column, int line);
-  void remove(int seat);
+  void predict(int ball, int skip, int lowest);
+  void add_pair(int ball, int other);
+  void add_wall(int ball, std::int32_t wall);
+  bool edge_ahead(int ball, bool along_x) const;
+  Prediction next_crossing(int ball) const;
+  void cross(int ball, bool along_x);
+  void schedule(int ball);
+  void insert(int ball, int column, int line);
+  void remove(int ball);
   template <int across, int down>
   std::size_t gather(int column, int line);
 
   CentreLimits limits_;
   CellLayout cells_;                 // the cells over the table (beyond/cell_layout.hpp)
-  std::size_t strip_size_ = 0;       // cells in a strip, the frame's included
-  double radius_ = 0;                // a
-  LargePageVector<Record> records_;  // by seat
-  LargePageVector<Ball> rows_;       // by seat: a copy of its row of R
-  LargePageVector<std::int32_t> number_;  // by seat: the ball's number in the scene
-  LargePageVector<std::int32_t> seat_;    // by number 1..N: the ball's seat
-  // By seat, for the few whose list is longer than the record holds: the
+  const Gas* gas_ = nullptr;         // the gas of the last call (its rows of R)
+  LargePageVector<Record> records_;  // by ball number 1..N (0 unused)
+  // By ball, for the few whose list is longer than the record holds: the
   // rest of it. (Not a list for every ball: 24 bytes a ball, for 10^6 balls
   // more than the rows of R themselves.)
   std::unordered_map<std::int32_t, std::vector<Prediction>> more_predictions_;
-  LargePageVector<std::uint32_t> count_;        // by seat: its collisions so far (wraps
+  LargePageVector<std::uint32_t> count_;        // by ball: its collisions so far (wraps
                                                 // after 2^32: harmless unless a
                                                 // prediction waits that long)
-  LargePageVector<std::int32_t> next_in_cell_;  // by seat: the next in its cell; 0 ends
+  LargePageVector<std::int32_t> next_in_cell_;  // by ball: the next in its cell; 0 ends
                                                 // (and next_in_cell_[0] stays 0)
   LargePageVector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
   std::vector<std::int32_t> neighbours_;        // gather's answer: balls of a block
@@ -214,11 +178,10 @@ class CellGrid final : public FirstCollisionFinder {
   struct KeyPlaces final : EventCalendar::Places {
     explicit KeyPlaces(const CellGrid* of) : grid(of) {}
     const CellGrid* grid;
-    std::uint64_t place(int seat) const override {
-      return grid->place(seat, grid->key(seat));
+    std::uint64_t place(int ball) const override {
+      return grid->place(ball, grid->key(ball));
     }
   };
-  std::uint64_t collisions_since_seating_ = 0;  // ball collisions since the last deal
 };
 
 }  // namespace gas
