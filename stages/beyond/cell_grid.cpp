@@ -17,16 +17,22 @@ constexpr std::uint64_t scan_event = std::uint64_t{1} << 63;
 
 // ---- a ball's list of predictions: the record's first few, then the rest
 
-// (The earliest stays at the front: the list's key.)
-void CellGrid::add(int ball, Prediction p) {
+// (The earliest stays at the front: the list's key. The rare overflow is a
+// call of its own, so that the common case is small enough to be written
+// into its callers.)
+inline void CellGrid::add(int ball, Prediction p) {
   Record& r = record(ball);
   if (r.listed > 0 && earlier(ball, p, r.first[0])) std::swap(p, r.first[0]);
   if (r.listed < predictions_kept) {
     r.first[r.listed] = p;
   } else {
-    more_predictions_[ball].push_back(p);
+    add_more(ball, p);
   }
   ++r.listed;
+}
+
+void CellGrid::add_more(int ball, const Prediction& p) {
+  more_predictions_[ball].push_back(p);
 }
 
 // Drops the predictions for which `dropped` says so (the others close up),

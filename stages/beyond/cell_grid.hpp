@@ -136,7 +136,8 @@ class CellGrid final : public FirstCollisionFinder {
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
 
   // A ball's list of predictions.
-  void add(int ball, Prediction p);  // (keeps the earliest at the front)
+  void add(int ball, Prediction p);              // (keeps the earliest at the front)
+  void add_more(int ball, const Prediction& p);  // (past the record's room)
   template <typename Dropped>
   void drop(int ball, Dropped dropped);
   void forget(int ball);
