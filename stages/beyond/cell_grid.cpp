@@ -287,6 +287,8 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   cells_ = lay_out_cells(gas.width, gas.height, 2 * gas.radius * (1 + margin),
                          4.0 * static_cast<double>(n) + 16);
 
+  // The rows of R, read at random places like the books: in large pages too.
+  ask_large_pages(gas.balls.data(), n * sizeof(Ball));
   records_.assign(n + 1, Record{});
   more_predictions_.clear();
   count_.assign(n + 1, 0);
