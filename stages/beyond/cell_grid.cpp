@@ -17,16 +17,22 @@ constexpr std::uint64_t scan_event = std::uint64_t{1} << 63;
 
 // ---- a ball's list of predictions: the record's first few, then the rest
 
-// (The earliest stays at the front: the list's key.)
-void CellGrid::add(int ball, Prediction p) {
+// (The earliest stays at the front: the list's key. The rare overflow is a
+// call of its own, so that the common case is small enough to be written
+// into its callers.)
+inline void CellGrid::add(int ball, Prediction p) {
   Record& r = record(ball);
   if (r.listed > 0 && earlier(ball, p, r.first[0])) std::swap(p, r.first[0]);
   if (r.listed < predictions_kept) {
     r.first[r.listed] = p;
   } else {
-    more_predictions_[ball].push_back(p);
+    add_more(ball, p);
   }
   ++r.listed;
+}
+
+void CellGrid::add_more(int ball, const Prediction& p) {
+  more_predictions_[ball].push_back(p);
 }
 
 // Drops the predictions for which `dropped` says so (the others close up),
@@ -142,8 +148,12 @@ std::size_t CellGrid::gather(int column, int line) {
   std::int32_t* out = neighbours_.data();
   const std::int32_t* next = next_in_cell_.data();
   std::size_t found = 0;
+  // (Both loops written out by the compiler: their counts are known, and
+  // counting them costs as much as the cells' own steps.)
+#pragma GCC unroll 3
   for (int l = line; l < line + down; ++l) {
     const std::int32_t* heads = &head(column, l);
+#pragma GCC unroll 3
     for (int c = 0; c < across; ++c) {
       std::int32_t k = heads[c];  // the cell's first ball, or 0
       out[found] = k;
@@ -241,8 +251,7 @@ void CellGrid::predict(int ball, int skip, int lowest) {
 
 // The ball's key moved to its day in the calendar.
 void CellGrid::schedule(int ball) {
-  const Prediction earliest = key(ball);
-  calendar_.schedule(ball, earliest.time, place(ball, earliest));
+  calendar_.schedule(ball, key(ball).time);
 }
 
 // A crossing: the ball moves to the next cell in the books, is predicted
@@ -278,6 +287,8 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   cells_ = lay_out_cells(gas.width, gas.height, 2 * gas.radius * (1 + margin),
                          4.0 * static_cast<double>(n) + 16);
 
+  // The rows of R, read at random places like the books: in large pages too.
+  ask_large_pages(gas.balls.data(), n * sizeof(Ball));
   records_.assign(n + 1, Record{});
   more_predictions_.clear();
   count_.assign(n + 1, 0);
@@ -304,7 +315,9 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
 Collision CellGrid::first(const Gas& gas) {
   gas_ = &gas;
   // The ball whose next event is the earliest; none: nothing will ever collide.
-  for (int ball = calendar_.earliest(); ball != 0; ball = calendar_.earliest()) {
+  const KeyPlaces places(this);
+  for (int ball = calendar_.earliest(places); ball != 0;
+       ball = calendar_.earliest(places)) {
     const Prediction p = key(ball);
     if (!current(p)) {  // its partner has collided since: dropped
       drop(ball, [&](const Prediction& q) { return !current(q); });

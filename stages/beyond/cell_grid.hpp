@@ -136,7 +136,8 @@ class CellGrid final : public FirstCollisionFinder {
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
 
   // A ball's list of predictions.
-  void add(int ball, Prediction p);  // (keeps the earliest at the front)
+  void add(int ball, Prediction p);              // (keeps the earliest at the front)
+  void add_more(int ball, const Prediction& p);  // (past the record's room)
   template <typename Dropped>
   void drop(int ball, Dropped dropped);
   void forget(int ball);
@@ -174,6 +175,14 @@ class CellGrid final : public FirstCollisionFinder {
   LargePageVector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
   std::vector<std::int32_t> neighbours_;        // gather's answer: balls of a block
   EventCalendar calendar_;  // every ball with an event, keyed by the earliest
+  // The calendar's question on a tie of times: the place of a ball's key.
+  struct KeyPlaces final : EventCalendar::Places {
+    explicit KeyPlaces(const CellGrid* of) : grid(of) {}
+    const CellGrid* grid;
+    std::uint64_t place(int ball) const override {
+      return grid->place(ball, grid->key(ball));
+    }
+  };
 };
 
 }  // namespace gas

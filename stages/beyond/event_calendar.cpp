@@ -32,7 +32,6 @@ constexpr std::uint64_t looking_per_question = 16;
 
 void EventCalendar::reset(std::size_t count) {
   entries_.assign(count + 1, Entry{});
-  places_.assign(count + 1, 0);
   // About one page per ball: with days as long as below, most keys fall
   // within a year, and a page holds few balls.
   page_.assign(std::bit_ceil(std::max<std::size_t>(count, 16)), 0);
@@ -71,7 +70,7 @@ void EventCalendar::take_off_page(int ball) {
   *link = entry.next;
 }
 
-void EventCalendar::schedule(int ball, double time, std::uint64_t place) {
+void EventCalendar::schedule(int ball, double time) {
   Entry& entry = entries_[static_cast<std::size_t>(ball)];
   if (entry.day != off) {
     if (laid_out_) take_off_page(ball);
@@ -79,7 +78,6 @@ void EventCalendar::schedule(int ball, double time, std::uint64_t place) {
     --on_calendar_;
   }
   entry.time = time;
-  places_[static_cast<std::size_t>(ball)] = place;
   if (!(time < never)) return;
   ++on_calendar_;
   entry.day = laid_out_ ? day_of(time) : today_;
@@ -125,7 +123,7 @@ void EventCalendar::lay_out() {
 
 // The smallest key among the balls whose day is today, or 0 if there is none
 // (the balls of later years on the same page are passed over).
-int EventCalendar::earliest_of_today() {
+int EventCalendar::earliest_of_today(const Places& places) {
   int best = 0;
   for (std::int32_t ball = page_[static_cast<std::uint64_t>(today_) & page_mask_];
        ball != 0;) {
@@ -134,8 +132,7 @@ int EventCalendar::earliest_of_today() {
     if (entry.day == today_) {
       if (best == 0 || entry.time < entries_[static_cast<std::size_t>(best)].time ||
           (entry.time == entries_[static_cast<std::size_t>(best)].time &&
-           places_[static_cast<std::size_t>(ball)] <
-               places_[static_cast<std::size_t>(best)]))
+           places.place(ball) < places.place(best)))
         best = ball;
     }
     ball = entry.next;
@@ -144,7 +141,7 @@ int EventCalendar::earliest_of_today() {
 }
 
 // [anchor: calendar-earliest]
-int EventCalendar::earliest() {
+int EventCalendar::earliest(const Places& places) {
   if (on_calendar_ == 0) return 0;
   if (!laid_out_) lay_out();
   // Now and then: are the days still the right length for the keys? (Too
@@ -157,7 +154,7 @@ int EventCalendar::earliest() {
   // of empty days, or near the last day 32 bits count, lay the calendar out
   // afresh: then the earliest key falls on day 0.)
   for (std::size_t empty_days = 0;; ++empty_days) {
-    const int ball = earliest_of_today();
+    const int ball = earliest_of_today(places);
     if (ball != 0) return ball;
     if (empty_days == page_.size() || today_ >= lay_out_again_on) {
       lay_out();
