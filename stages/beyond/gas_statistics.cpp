@@ -77,7 +77,9 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   bin_count_.assign(static_cast<std::size_t>(count) + 1, 0);
   bin_time_.assign(bin_count_.size(), 0.0);
   bin_since_.assign(bin_count_.size(), gas.time);
-  for (const Ball& ball : gas.balls) count_speed(ball, gas.time, +1);
+  speeds_.assign(balls_, 0.0);
+  speed_bins_.assign(balls_, 0);
+  for (std::size_t i = 0; i < balls_; ++i) speed_enters(i, gas.balls[i], gas.time);
   // A sample for the error bars every N collisions: about two a ball.
   collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_));
   // The warm-up, in collisions of two balls: each counts for two balls.
@@ -91,14 +93,24 @@ int GasStatistics::bin_of(double speed) const {
   return static_cast<int>(std::min(bin, static_cast<double>(bins())));
 }
 
-void GasStatistics::count_speed(const Ball& ball, double time, int change) {
-  const double speed = speed_of(ball);
-  speed_sum_ += change * speed;
+void GasStatistics::count_in_bin(std::size_t bin, double time, long long change) {
   // The bin's ball-time up to now, with the count it had; then the new count.
-  const auto b = static_cast<std::size_t>(bin_of(speed));
-  bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
-  bin_since_[b] = time;
-  bin_count_[b] += change;
+  bin_time_[bin] += static_cast<double>(bin_count_[bin]) * (time - bin_since_[bin]);
+  bin_since_[bin] = time;
+  bin_count_[bin] += change;
+}
+
+void GasStatistics::speed_enters(std::size_t i, const Ball& ball, double time) {
+  const double speed = speed_of(ball);
+  speeds_[i] = speed;
+  speed_bins_[i] = static_cast<std::size_t>(bin_of(speed));
+  speed_sum_ += speed;
+  count_in_bin(speed_bins_[i], time, +1);
+}
+
+void GasStatistics::speed_leaves(std::size_t i, double time) {
+  speed_sum_ -= speeds_[i];
+  count_in_bin(speed_bins_[i], time, -1);
 }
 
 // [anchor: interior-time]
@@ -173,8 +185,8 @@ void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::balls) {
     const Ball& second = gas.balls[static_cast<std::size_t>(c.second - 1)];  // N2
     add_interior_flight(sums_, second, t);
-    count_speed(first, t, -1);  // the old speeds leave the sums
-    count_speed(second, t, -1);
+    speed_leaves(static_cast<std::size_t>(c.first - 1), t);  // the old speeds leave
+    speed_leaves(static_cast<std::size_t>(c.second - 1), t);
     before_v_ = {first.vx, first.vy};
   }
 }
@@ -183,8 +195,8 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::balls) {
     const Ball& p = gas.balls[static_cast<std::size_t>(c.first - 1)];
     const Ball& q = gas.balls[static_cast<std::size_t>(c.second - 1)];
-    count_speed(p, c.time, +1);  // and the new ones come in
-    count_speed(q, c.time, +1);
+    speed_enters(static_cast<std::size_t>(c.first - 1), p, c.time);  // the new come in
+    speed_enters(static_cast<std::size_t>(c.second - 1), q, c.time);
     // The collision virial: the push one ball gave the other, dv of N1,
     // along d = r1 - r2 at contact: d . dv = 2a |dv| (positive).
     const double dx = p.x - q.x, dy = p.y - q.y;  // both written at TC
@@ -201,7 +213,7 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
   // round-off of taking out and putting in never accumulates.
   if (++collisions_ % static_cast<long long>(std::max<std::size_t>(balls_, 1)) == 0) {
     speed_sum_ = 0;
-    for (const Ball& ball : gas.balls) speed_sum_ += speed_of(ball);
+    for (const double speed : speeds_) speed_sum_ += speed;
   }
   if (!averaging_) {
     if (ball_collisions_ >= warm_up_until_) start_averages(gas);
