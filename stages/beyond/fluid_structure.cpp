@@ -97,7 +97,10 @@ FluidStructure::FluidStructure(const Gas& gas, const Region& interior, bool curv
     wall_bins_.resize(wall_bins);
   }
   reach_ = 2 * radius_ + static_cast<double>(pair_bins) * bin_;
-  cells_ = lay_out_cells(gas.width, gas.height, reach_, static_cast<double>(balls_) + 16);
+  // Cells reach_ across, up to two per ball (a cell a third larger for many
+  // balls would hold nearly twice the centres to compare).
+  cells_ =
+      lay_out_cells(gas.width, gas.height, reach_, 2 * static_cast<double>(balls_) + 16);
   pair_counts_.assign(pair_bins, 0.0);
   wall_counts_.assign(std::max<std::size_t>(wall_bins, contact_bins), 0.0);
 }
@@ -139,7 +142,7 @@ void FluidStructure::take_snapshot(const Gas& gas, double time) {
   for (const Point& p : centres_) {
     if (p.y < interior_.y_min || p.y > interior_.y_max) continue;
     const double gap = std::min(p.x - a, width_ - a - p.x);  // d, from the limit
-    const double k = std::floor(gap / bin_);
+    const double k = gap / bin_;  // its bin: the whole part (k >= 0: the floor)
     if (k >= 0 && k < static_cast<double>(wall_counts_.size()))
       wall_counts_[static_cast<std::size_t>(k)] += 1;
   }
@@ -195,11 +198,17 @@ void FluidStructure::sort_by_cell() {
       static_cast<std::size_t>(cells_.columns) * static_cast<std::size_t>(cells_.rows);
   cell_start_.assign(cell_count + 1, 0);
   cell_of_.resize(centres_.size());
+  // A centre's column and row: its coordinate over the cell's side, within
+  // the table's cells, cut to a whole number (the layout's column_of and
+  // row_of, without their floor: the number is never negative here).
+  const double last_column = cells_.columns - 1, last_row = cells_.rows - 1;
   for (std::size_t i = 0; i < centres_.size(); ++i) {
     const Point& p = centres_[i];
-    cell_of_[i] = static_cast<std::size_t>(cells_.row_of(p.y)) *
-                      static_cast<std::size_t>(cells_.columns) +
-                  static_cast<std::size_t>(cells_.column_of(p.x));
+    const double column = std::clamp(p.x / cells_.cell_width, 0.0, last_column);
+    const double row = std::clamp(p.y / cells_.cell_height, 0.0, last_row);
+    cell_of_[i] =
+        static_cast<std::size_t>(row) * static_cast<std::size_t>(cells_.columns) +
+        static_cast<std::size_t>(column);
     ++cell_start_[cell_of_[i] + 1];
   }
   for (std::size_t c = 0; c < cell_count; ++c) cell_start_[c + 1] += cell_start_[c];
