@@ -97,6 +97,10 @@ FluidStructure::FluidStructure(const Gas& gas, const Region& interior, bool curv
     wall_bins_.resize(wall_bins);
   }
   reach_ = 2 * radius_ + static_cast<double>(pair_bins) * bin_;
+  // Cells reach_ across, up to two per ball (a cell a third larger for many
+  // balls would hold nearly twice the centres to compare).
+  cells_ =
+      lay_out_cells(gas.width, gas.height, reach_, 2 * static_cast<double>(balls_) + 16);
   pair_counts_.assign(pair_bins, 0.0);
   wall_counts_.assign(std::max<std::size_t>(wall_bins, contact_bins), 0.0);
 }
@@ -138,7 +142,7 @@ void FluidStructure::take_snapshot(const Gas& gas, double time) {
   for (const Point& p : centres_) {
     if (p.y < interior_.y_min || p.y > interior_.y_max) continue;
     const double gap = std::min(p.x - a, width_ - a - p.x);  // d, from the limit
-    const double k = std::floor(gap / bin_);
+    const double k = gap / bin_;  // its bin: the whole part (k >= 0: the floor)
     if (k >= 0 && k < static_cast<double>(wall_counts_.size()))
       wall_counts_[static_cast<std::size_t>(k)] += 1;
   }
@@ -148,28 +152,30 @@ void FluidStructure::take_snapshot(const Gas& gas, double time) {
   for (std::size_t k = 0; k < wall_bins_.size(); ++k) wall_bins_[k].add(wall_counts_[k]);
 
   // Pairs: each ball of the interior with every ball at 2a ... reach_ from
-  // it, found in the cells around it; g in a shell is the count over what a
-  // uniform gas of the interior's density would put there.
-  CellLists cells(lay_out_cells(gas.width, gas.height, reach_,
-                                static_cast<double>(centres_.size()) + 16),
-                  centres_.size());
-  for (std::size_t i = 0; i < centres_.size(); ++i)
-    cells.file(i, centres_[i].x, centres_[i].y);
+  // it; g in a shell is the count over what a uniform gas of the interior's
+  // density would put there. Each pair is found once, in one cell or two
+  // neighbouring ones, and counts once for each of its balls inside.
+  sort_by_cell();
   std::fill(pair_counts_.begin(), pair_counts_.end(), 0.0);
-  const double closest = 4 * a * a, farthest = reach_ * reach_;
   double inside = 0;
-  for (const Point& p : centres_) {
-    if (!interior_.contains(p.x, p.y)) continue;
-    inside += 1;
-    cells.visit_near(p.x, p.y, [&](std::size_t j) {
-      const double dx = centres_[j].x - p.x, dy = centres_[j].y - p.y;
-      const double d2 = dx * dx + dy * dy;  // the ball itself: 0, in no shell
-      if (d2 >= closest && d2 < farthest) {
-        const auto k = static_cast<std::size_t>((std::sqrt(d2) - 2 * a) / bin_);
-        pair_counts_[std::min(k, pair_counts_.size() - 1)] += 1;
+  for (const double in : inside_) inside += in;
+  const int columns = cells_.columns, rows = cells_.rows;
+  for (int row = 0; row < rows; ++row) {
+    for (int column = 0; column < columns; ++column) {
+      const auto cell = static_cast<std::size_t>(row * columns + column);
+      const std::size_t end = cell_start_[cell + 1];
+      for (std::size_t i = cell_start_[cell]; i < end; ++i) {
+        // Its own cell's later centres, the next cell along the row, and
+        // the three of the next row: every neighbour once.
+        count_pairs(i, i + 1, end);
+        if (column + 1 < columns) count_pairs(i, end, cell_start_[cell + 2]);
+        if (row + 1 == rows) continue;
+        const auto above = cell + static_cast<std::size_t>(columns);
+        const std::size_t from = cell_start_[column > 0 ? above - 1 : above];
+        const std::size_t to = cell_start_[column + 1 < columns ? above + 2 : above + 1];
+        count_pairs(i, from, to);  // three cells' runs follow each other
       }
-      return true;
-    });
+    }
   }
   if (!(inside > 0)) return;
   const double density = inside / interior_.area();
@@ -184,6 +190,54 @@ void FluidStructure::take_snapshot(const Gas& gas, double time) {
   for (std::size_t k = 0; k < pair_bins_.size(); ++k) pair_bins_[k].add(pair_counts_[k]);
 }
 // [/anchor: structure-snapshot]
+
+// The centres sorted by cell: counted per cell, each cell's run placed
+// after the last one's, then filed in.
+void FluidStructure::sort_by_cell() {
+  const auto cell_count =
+      static_cast<std::size_t>(cells_.columns) * static_cast<std::size_t>(cells_.rows);
+  cell_start_.assign(cell_count + 1, 0);
+  cell_of_.resize(centres_.size());
+  // A centre's column and row: its coordinate over the cell's side, within
+  // the table's cells, cut to a whole number (the layout's column_of and
+  // row_of, without their floor: the number is never negative here).
+  const double last_column = cells_.columns - 1, last_row = cells_.rows - 1;
+  for (std::size_t i = 0; i < centres_.size(); ++i) {
+    const Point& p = centres_[i];
+    const double column = std::clamp(p.x / cells_.cell_width, 0.0, last_column);
+    const double row = std::clamp(p.y / cells_.cell_height, 0.0, last_row);
+    cell_of_[i] =
+        static_cast<std::size_t>(row) * static_cast<std::size_t>(cells_.columns) +
+        static_cast<std::size_t>(column);
+    ++cell_start_[cell_of_[i] + 1];
+  }
+  for (std::size_t c = 0; c < cell_count; ++c) cell_start_[c + 1] += cell_start_[c];
+  sorted_.resize(centres_.size());
+  inside_.resize(centres_.size());
+  std::vector<std::size_t>& next = cell_of_;  // each cell's next free place
+  for (std::size_t i = 0; i < centres_.size(); ++i) {
+    const std::size_t place = cell_start_[next[i]]++;
+    sorted_[place] = centres_[i];
+    inside_[place] = interior_.contains(centres_[i].x, centres_[i].y) ? 1.0 : 0.0;
+  }
+  // The places moved on by each cell's count: back to each run's start.
+  for (std::size_t c = cell_count; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
+  cell_start_[0] = 0;
+}
+
+void FluidStructure::count_pairs(std::size_t i, std::size_t from, std::size_t to) {
+  const double a = radius_, closest = 4 * a * a, farthest = reach_ * reach_;
+  const Point p = sorted_[i];
+  for (std::size_t j = from; j < to; ++j) {
+    const double dx = sorted_[j].x - p.x, dy = sorted_[j].y - p.y;
+    const double d2 = dx * dx + dy * dy;
+    const double weight = inside_[i] + inside_[j];  // 0, 1 or 2 balls inside
+    if (d2 >= closest && d2 < farthest && weight > 0) {
+      const auto k = static_cast<std::size_t>((std::sqrt(d2) - 2 * a) / bin_);
+      pair_counts_[std::min(k, pair_counts_.size() - 1)] += weight;
+    }
+  }
+}
 
 // Each bin's error is its blocking error at the level the contact value's
 // analysis chose: the bins are the same snapshots, correlated alike, and one

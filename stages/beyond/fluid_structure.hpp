@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "beyond/blocking.hpp"
+#include "beyond/cell_layout.hpp"
 #include "stage1_data.hpp"
 
 namespace gas {
@@ -101,6 +102,10 @@ class FluidStructure {
  private:
   void take_snapshots(const Gas& gas, double time);
   void take_snapshot(const Gas& gas, double time);
+  void sort_by_cell();
+  // Adds, for each pair of centres i (in sorted_) and from ... to - 1 at
+  // 2a ... reach_ apart, one to its shell for each of its balls inside.
+  void count_pairs(std::size_t i, std::size_t from, std::size_t to);
   std::vector<CurveBin> curve(const std::vector<BlockingAnalysis>& bins,
                               double first_edge, const BlockingAnalysis& contact) const;
 
@@ -121,6 +126,13 @@ class FluidStructure {
   // Scratch, kept between snapshots.
   std::vector<Point> centres_;
   std::vector<double> pair_counts_, wall_counts_;
+  // The centres sorted by cell (at least reach_ across): each cell's run in
+  // sorted_ is cell_start_[cell] ... cell_start_[cell + 1] - 1; inside_: 1
+  // for a centre in the interior, else 0.
+  CellLayout cells_;
+  std::vector<std::size_t> cell_start_, cell_of_;
+  std::vector<Point> sorted_;
+  std::vector<double> inside_;
 };
 
 // The weights w_k of the fit at contact: the polynomial c0 + c1 s + ... +

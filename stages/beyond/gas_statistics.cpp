@@ -77,7 +77,8 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   bin_count_.assign(static_cast<std::size_t>(count) + 1, 0);
   bin_time_.assign(bin_count_.size(), 0.0);
   bin_since_.assign(bin_count_.size(), gas.time);
-  for (const Ball& ball : gas.balls) count_speed(ball, gas.time, +1);
+  counted_.assign(balls_, CountedSpeed{});
+  for (std::size_t i = 0; i < balls_; ++i) speed_enters(i, gas.balls[i], gas.time);
   // A sample for the error bars every N collisions: about two a ball.
   collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_));
   // The warm-up, in collisions of two balls: each counts for two balls.
@@ -87,18 +88,31 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
 }
 
 int GasStatistics::bin_of(double speed) const {
-  const double bin = bin_width_ > 0 ? std::floor(speed / bin_width_) : 0.0;
+  // floor(speed / width), at most bins(): a speed is never negative, so
+  // cutting off the fraction (after the bound, which keeps the number small
+  // enough for an int) is the floor, and cheaper.
+  const double bin = bin_width_ > 0 ? speed / bin_width_ : 0.0;
   return static_cast<int>(std::min(bin, static_cast<double>(bins())));
 }
 
-void GasStatistics::count_speed(const Ball& ball, double time, int change) {
-  const double speed = speed_of(ball);
-  speed_sum_ += change * speed;
+void GasStatistics::count_in_bin(std::size_t bin, double time, long long change) {
   // The bin's ball-time up to now, with the count it had; then the new count.
-  const auto b = static_cast<std::size_t>(bin_of(speed));
-  bin_time_[b] += static_cast<double>(bin_count_[b]) * (time - bin_since_[b]);
-  bin_since_[b] = time;
-  bin_count_[b] += change;
+  bin_time_[bin] += static_cast<double>(bin_count_[bin]) * (time - bin_since_[bin]);
+  bin_since_[bin] = time;
+  bin_count_[bin] += change;
+}
+
+void GasStatistics::speed_enters(std::size_t i, const Ball& ball, double time) {
+  const double speed = speed_of(ball);
+  const auto bin = static_cast<std::size_t>(bin_of(speed));
+  counted_[i] = {speed, ball.vx * ball.vx + ball.vy * ball.vy, bin};
+  speed_sum_ += speed;
+  count_in_bin(bin, time, +1);
+}
+
+void GasStatistics::speed_leaves(std::size_t i, double time) {
+  speed_sum_ -= counted_[i].speed;
+  count_in_bin(counted_[i].bin, time, -1);
 }
 
 // [anchor: interior-time]
@@ -135,14 +149,14 @@ double GasStatistics::interior_time_of(const Ball& ball, double until) const {
 // [/anchor: interior-time]
 
 // A flight's time inside the interior, and its v^2 and v times that time
-// (the speed is constant along a flight).
-void GasStatistics::add_interior_flight(Sums& s, const Ball& ball, double until) const {
+// (the speed is constant along a flight: the one counted_ keeps).
+void GasStatistics::add_interior_flight(Sums& s, std::size_t i, const Ball& ball,
+                                        double until) const {
   const double inside = interior_time_of(ball, until);
   if (inside == 0) return;
-  const double square = ball.vx * ball.vx + ball.vy * ball.vy;
   s.interior_time += inside;
-  s.interior_energy += square * inside;
-  s.interior_speed += std::sqrt(square) * inside;
+  s.interior_energy += counted_[i].square * inside;
+  s.interior_speed += counted_[i].speed * inside;
 }
 
 // [anchor: collision-sums]
@@ -169,12 +183,12 @@ void GasStatistics::before_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::horizontal_wall && width_ > 0)
     sums_.push_y += 2 * std::abs(first.vy) / (2 * width_);
   // The flights that end here, and the speeds that change.
-  add_interior_flight(sums_, first, t);
+  add_interior_flight(sums_, static_cast<std::size_t>(c.first - 1), first, t);
   if (c.kind == CollisionKind::balls) {
     const Ball& second = gas.balls[static_cast<std::size_t>(c.second - 1)];  // N2
-    add_interior_flight(sums_, second, t);
-    count_speed(first, t, -1);  // the old speeds leave the sums
-    count_speed(second, t, -1);
+    add_interior_flight(sums_, static_cast<std::size_t>(c.second - 1), second, t);
+    speed_leaves(static_cast<std::size_t>(c.first - 1), t);  // the old speeds leave
+    speed_leaves(static_cast<std::size_t>(c.second - 1), t);
     before_v_ = {first.vx, first.vy};
   }
 }
@@ -183,8 +197,8 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
   if (c.kind == CollisionKind::balls) {
     const Ball& p = gas.balls[static_cast<std::size_t>(c.first - 1)];
     const Ball& q = gas.balls[static_cast<std::size_t>(c.second - 1)];
-    count_speed(p, c.time, +1);  // and the new ones come in
-    count_speed(q, c.time, +1);
+    speed_enters(static_cast<std::size_t>(c.first - 1), p, c.time);  // the new come in
+    speed_enters(static_cast<std::size_t>(c.second - 1), q, c.time);
     // The collision virial: the push one ball gave the other, dv of N1,
     // along d = r1 - r2 at contact: d . dv = 2a |dv| (positive).
     const double dx = p.x - q.x, dy = p.y - q.y;  // both written at TC
@@ -201,7 +215,7 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
   // round-off of taking out and putting in never accumulates.
   if (++collisions_ % static_cast<long long>(std::max<std::size_t>(balls_, 1)) == 0) {
     speed_sum_ = 0;
-    for (const Ball& ball : gas.balls) speed_sum_ += speed_of(ball);
+    for (const CountedSpeed& counted : counted_) speed_sum_ += counted.speed;
   }
   if (!averaging_) {
     if (ball_collisions_ >= warm_up_until_) start_averages(gas);
@@ -241,14 +255,15 @@ void GasStatistics::restart(const Gas& gas) {
 
 void GasStatistics::before_rows_rewritten(const Gas& gas) {
   if (averaging_) structure_.catch_up(gas, gas.time);
-  for (const Ball& ball : gas.balls) add_interior_flight(sums_, ball, gas.time);
+  for (std::size_t i = 0; i < balls_; ++i)
+    add_interior_flight(sums_, i, gas.balls[i], gas.time);
 }
 
 GasStatistics::Sums GasStatistics::sums_at(const Gas& gas, double now) const {
   Sums s = sums_;
   s.duration += now - last_time_;
   s.speed_time += speed_sum_ * (now - last_time_);
-  for (const Ball& ball : gas.balls) add_interior_flight(s, ball, now);
+  for (std::size_t i = 0; i < balls_; ++i) add_interior_flight(s, i, gas.balls[i], now);
   return s;
 }
 

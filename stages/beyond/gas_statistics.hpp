@@ -174,11 +174,17 @@ class GasStatistics final : public CollisionObserver {
   void start_averages(const Gas& gas);
   Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress
   int bin_of(double speed) const;                  // bins() for the faster ones
-  // A ball's speed leaves the sums (change -1) or comes in (+1) at `time`.
-  void count_speed(const Ball& ball, double time, int change);
+  // Ball number `i` (from 0) gets a new speed at `time`: it comes into the
+  // sums and counted_. Or its speed leaves the sums at `time`:
+  // the one it came in with (a bounce or the key B keeps a speed).
+  void speed_enters(std::size_t i, const Ball& ball, double time);
+  void speed_leaves(std::size_t i, double time);
+  // A bin's ball-time brought up to `time`, and its count changed.
+  void count_in_bin(std::size_t bin, double time, long long change);
   double interior_time_of(const Ball& ball, double until) const;  // of its flight
-  // Its flight's time inside, and v^2 and v times it, into the sums `s`.
-  void add_interior_flight(Sums& s, const Ball& ball, double until) const;
+  // Ball number `i`'s flight: its time inside, and v^2 and v times it, into
+  // the sums `s`.
+  void add_interior_flight(Sums& s, std::size_t i, const Ball& ball, double until) const;
 
   std::size_t balls_ = 0;
   double kT_ = 0;
@@ -202,6 +208,15 @@ class GasStatistics final : public CollisionObserver {
   std::vector<long long> bin_count_;  // balls in each bin now, the last for beyond
   std::vector<double> bin_time_;      // ball-time in each bin, up to bin_since_
   std::vector<double> bin_since_;
+  // Each ball's speed and its bin, as counted in the sums now: a speed
+  // changes only at a collision of two balls, so it is worked out once then
+  // and not again when it leaves (every bit the same as afresh).
+  struct CountedSpeed {
+    double speed = 0;   // v, as speed_of works it out
+    double square = 0;  // v^2 = vx^2 + vy^2
+    std::size_t bin = 0;
+  };
+  std::vector<CountedSpeed> counted_;  // by ball
 
   // The error bars: a sample every collisions_per_sample_ collisions, each
   // quantity's value over it fed to a blocking analysis.

@@ -14,11 +14,12 @@
 namespace gas {
 
 // [anchor: kinetic-figures]
-KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics) {
+KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
+                               double energy) {
   KineticFigures k;
   const auto n = static_cast<double>(gas.balls.size());
-  k.rms_speed = gas.balls.empty() ? 0.0 : std::sqrt(2 * kinetic_energy(gas) / n);
-  k.theory = kinetic_theory(gas);
+  k.rms_speed = gas.balls.empty() ? 0.0 : std::sqrt(2 * energy / n);
+  k.theory = kinetic_theory(gas, energy);
   k.measured = statistics.measured(gas);
   const MeasuredFigures& m = k.measured;
   // H's noise: 2 N H of N Maxwellian speeds in B bins and one beyond is

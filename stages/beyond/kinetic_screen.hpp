@@ -46,8 +46,11 @@ struct KineticFigures {
   // The reference g(2a)'s uncertainty, from eta's: |dg/deta| x eta's error.
   double pair_contact_theory_error = not_known;
 };
-// The predictions for `gas` and what `statistics` measured, at the gas's T.
-KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics);
+// The predictions for `gas` and what `statistics` measured, at the gas's T;
+// `energy`: the gas's kinetic energy E now (kinetic_energy, or stage 6's
+// figures of the same moment).
+KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
+                               double energy);
 
 // The statistics screen: the figures at fixed places inside the border, each
 // beside its prediction, and under them the histogram of speeds with the

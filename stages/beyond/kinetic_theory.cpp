@@ -83,11 +83,15 @@ double enskog_mean_free_path(double eta, double radius) {
 // [/anchor: enskog]
 
 KineticTheory kinetic_theory(const Gas& gas) {
+  return kinetic_theory(gas, kinetic_energy(gas));
+}
+
+KineticTheory kinetic_theory(const Gas& gas, double energy) {
   KineticTheory t;
   const auto n_balls = static_cast<double>(gas.balls.size());
   if (gas.balls.empty()) return t;
   const double pi = std::numbers::pi;
-  t.kT = kinetic_energy(gas) / n_balls;
+  t.kT = energy / n_balls;
   t.mean_speed = fixed_energy_mean_speed(gas.balls.size(), t.kT);
   t.maxwell_mean_speed = std::sqrt(pi * t.kT / 2);
   t.rms_speed = std::sqrt(2 * t.kT);

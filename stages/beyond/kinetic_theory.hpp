@@ -45,6 +45,9 @@ struct KineticTheory {
 inline constexpr std::size_t kinetic_theory_fewest_balls = 100;
 
 KineticTheory kinetic_theory(const Gas& gas);
+// The same, with the gas's kinetic energy E already summed (kinetic_energy):
+// a frame sums it once for stage 6 and for these.
+KineticTheory kinetic_theory(const Gas& gas, double energy);
 
 // The 2D Maxwell-Boltzmann distribution of speeds at temperature kT (unit
 // mass): the density f(v) = (v / kT) exp(-v^2 / (2 kT)) and its integral

@@ -197,7 +197,8 @@ class ConsoleRun {
       if (options_.drawn || outputs_.writes_csv()) {
         const Figures figures = figures_of(control_);
         std::optional<KineticFigures> kinetic;  // worked out once, for both uses
-        if (statistics_) kinetic = kinetic_figures(control_.gas, *statistics_);
+        if (statistics_)
+          kinetic = kinetic_figures(control_.gas, *statistics_, figures.energy);
         if (kinetic && outputs_.writes_csv()) {
           outputs_.write_csv(figures, *kinetic,
                              lyapunov_csv_row(lyapunov_->measured(control_.gas)));
@@ -307,7 +308,8 @@ class ConsoleRun {
       case ScreenMode::stats:
         draw_kinetic_figures(
             screen_, figures,
-            kinetic ? *kinetic : kinetic_figures(control_.gas, *statistics_),
+            kinetic ? *kinetic
+                    : kinetic_figures(control_.gas, *statistics_, figures.energy),
             lyapunov_lines(control_.gas, lyapunov_->measured(control_.gas)));
         break;
     }
