@@ -8,8 +8,9 @@
 // its own. Three parts of the program rest on that: the cell grid of stage 4
 // (beyond/cell_grid.*), the placement of the balls of a 'random' line
 // (beyond/random_placement.*) and the pairs of the fluid's structure
-// (beyond/fluid_structure.*). All lay out their cells here; the last two
-// file the centres of one moment in CellLists.
+// (beyond/fluid_structure.*). All lay out their cells here; the placement
+// files the centres of one moment in CellLists (the structure sorts its
+// centres by cell itself, each pair met once).
 // Beyond the article: the article compares every ball with every other.
 // Lesson: lessons/10-scaling.md (the grid); lessons/2-input.md (the
 // 'random' line).
