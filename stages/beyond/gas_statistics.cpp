@@ -54,6 +54,8 @@ GasStatistics::Sums GasStatistics::Sums::minus(const Sums& earlier) const {
           interior_time - earlier.interior_time,
           interior_energy - earlier.interior_energy,
           interior_speed - earlier.interior_speed,
+          beside_time - earlier.beside_time,
+          beside_energy - earlier.beside_energy,
           ball_collisions - earlier.ball_collisions,
           interior_collisions - earlier.interior_collisions};
 }
@@ -70,6 +72,16 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   // The interior: centres at least interior_margin_radii from every wall.
   const double margin = interior_margin_radii * gas.radius;
   interior_ = {margin, gas.width - margin, margin, gas.height - margin};
+  // The strips beside the walls' middles: the interior's first
+  // interior_margin_radii a along each of the two walls (its layers by the
+  // wall are left out with the margin). The push on a wall's middle follows
+  // the pressure of the gas just in front of it, slow sound waves included;
+  // the interior as a whole averages those waves away (lesson 11).
+  const double strip = std::min(margin, (interior_.x_max - interior_.x_min) / 4);
+  beside_left_ = {interior_.x_min, interior_.x_min + strip, interior_.y_min,
+                  interior_.y_max};
+  beside_right_ = {interior_.x_max - strip, interior_.x_max, interior_.y_min,
+                   interior_.y_max};
   structure_ = FluidStructure(gas, interior_, structure_curves);
   const int count = std::max(bins, 1);
   bin_width_ = histogram_range * std::sqrt(2 * kT_) / count;
@@ -117,19 +129,20 @@ void GasStatistics::speed_leaves(std::size_t i, double time) {
 
 // [anchor: interior-time]
 // How long the ball's present flight, from its row's moment SINCE (or the
-// start of the averages, if later) to `until`, keeps its centre inside the
-// interior: the straight line x + vx s, y + vy s cut by the interior's four
-// sides (for each axis the times between its two sides, then the overlap).
-double GasStatistics::interior_time_of(const Ball& ball, double until) const {
+// start of the averages, if later) to `until`, keeps its centre inside
+// `region` (the interior, say): the straight line x + vx s, y + vy s cut by
+// the region's four sides (for each axis the times between its two sides,
+// then the overlap).
+double GasStatistics::time_in(const Region& region, const Ball& ball,
+                              double until) const {
   const double from = std::max(ball.since, start_);
   if (!(until > from)) return 0;
   double first = 0, last = until - from;  // s, from `from`
   const double x = ball.x + ball.vx * (from - ball.since);
   const double y = ball.y + ball.vy * (from - ball.since);
   // Most flights start and end inside: all of the flight, no cutting. (The
-  // interior is convex, so a straight flight with both ends in it stays in.)
-  if (interior_.contains(x, y) &&
-      interior_.contains(x + ball.vx * last, y + ball.vy * last))
+  // region is convex, so a straight flight with both ends in it stays in.)
+  if (region.contains(x, y) && region.contains(x + ball.vx * last, y + ball.vy * last))
     return last;
   // Along one axis, the times between the two sides low ... high.
   auto cut = [&](double position, double velocity, double low, double high) {
@@ -142,8 +155,8 @@ double GasStatistics::interior_time_of(const Ball& ball, double until) const {
     first = std::max(first, std::min(enter, leave));
     last = std::min(last, std::max(enter, leave));
   };
-  cut(x, ball.vx, interior_.x_min, interior_.x_max);
-  cut(y, ball.vy, interior_.y_min, interior_.y_max);
+  cut(x, ball.vx, region.x_min, region.x_max);
+  cut(y, ball.vy, region.y_min, region.y_max);
   return std::max(0.0, last - first);
 }
 // [/anchor: interior-time]
@@ -152,11 +165,16 @@ double GasStatistics::interior_time_of(const Ball& ball, double until) const {
 // (the speed is constant along a flight: the one counted_ keeps).
 void GasStatistics::add_interior_flight(Sums& s, std::size_t i, const Ball& ball,
                                         double until) const {
-  const double inside = interior_time_of(ball, until);
+  const double inside = time_in(interior_, ball, until);
   if (inside == 0) return;
   s.interior_time += inside;
   s.interior_energy += counted_[i].square * inside;
   s.interior_speed += counted_[i].speed * inside;
+  // And in the strips beside the walls' middles (inside the interior).
+  const double beside =
+      time_in(beside_left_, ball, until) + time_in(beside_right_, ball, until);
+  s.beside_time += beside;
+  s.beside_energy += counted_[i].square * beside;
 }
 
 // [anchor: collision-sums]
@@ -314,10 +332,18 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return s.interior_speed / s.interior_time / rate;
     case wall_middle_pressure_q:
       return s.push_x_middle / t;
-    case pressure_minus_theory_q:  // against the bulk's P = Z_ref n kT at this
-                                   // stretch's eta and kT (n = eta / (pi a^2))
-      return s.push_x_middle / t - hard_disc_fluid_compressibility(eta) * eta *
-                                       kT_inside / (std::numbers::pi * a2);
+    case pressure_minus_theory_q: {  // against the bulk's P = Z_ref n kT in
+      // front of the middles, at this stretch's eta and kT there
+      const double eta_beside = value_of(beside_walls_eta_q, s);
+      return s.push_x_middle / t - hard_disc_fluid_compressibility(eta_beside) *
+                                       eta_beside * value_of(beside_walls_kT_q, s) /
+                                       (std::numbers::pi * a2);
+    }
+    case beside_walls_eta_q:
+      return s.beside_time / t / (beside_left_.area() + beside_right_.area()) *
+             std::numbers::pi * a2;
+    case beside_walls_kT_q:
+      return s.beside_energy / (2 * s.beside_time);
     case mean_free_path_minus_theory_q:
       return s.interior_speed / s.interior_time / rate -
              enskog_mean_free_path(eta, radius_);
@@ -364,6 +390,10 @@ Average& GasStatistics::average_of(MeasuredFigures& m, Quantity q) {
       return m.wall_middle_pressure;
     case pressure_minus_theory_q:
       return m.pressure_minus_theory;
+    case beside_walls_eta_q:
+      return m.beside_walls_eta;
+    case beside_walls_kT_q:
+      return m.beside_walls_kT;
     case mean_free_path_minus_theory_q:
       return m.mean_free_path_minus_theory;
     case quantity_count:

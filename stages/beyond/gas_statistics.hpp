@@ -85,7 +85,10 @@ struct MeasuredFigures {
                                         // eta_int, snapshot by snapshot
   Average wall_contact_pressure;  // kT n(contact) at the walls x = 0, A1 (their middles)
   Average wall_middle_pressure;   // the push on those middles: P there
-  Average pressure_minus_theory;  // P there - Z_ref n_int kT_int, sample by sample
+  Average pressure_minus_theory;  // P there - Z_ref n kT of the strips beside them,
+                                  // sample by sample
+  Average beside_walls_eta;       // eta of those strips (n pi a^2)
+  Average beside_walls_kT;        // their own kT
   Average mean_free_path_minus_theory;  // the interior's path - Enskog's at eta_int,
                                         // sample by sample
   std::vector<double> speed_fractions;  // the histogram: ball-time fractions per bin
@@ -142,6 +145,8 @@ class GasStatistics final : public CollisionObserver {
     double interior_time = 0;    // ball-time spent inside the interior
     double interior_energy = 0;  // integral over that time of v^2 (2 kT per ball)
     double interior_speed = 0;   // and of v
+    double beside_time = 0;      // ball-time in the two strips beside the walls' middles
+    double beside_energy = 0;    // integral over that time of v^2
     long long ball_collisions = 0;
     long long interior_collisions =
         0;  // of two balls, their midpoint inside the interior
@@ -166,6 +171,8 @@ class GasStatistics final : public CollisionObserver {
     wall_middle_pressure_q,
     pressure_minus_theory_q,
     mean_free_path_minus_theory_q,
+    beside_walls_eta_q,
+    beside_walls_kT_q,
     quantity_count
   };
   double value_of(Quantity q, const Sums& s) const;
@@ -181,7 +188,8 @@ class GasStatistics final : public CollisionObserver {
   void speed_leaves(std::size_t i, double time);
   // A bin's ball-time brought up to `time`, and its count changed.
   void count_in_bin(std::size_t bin, double time, long long change);
-  double interior_time_of(const Ball& ball, double until) const;  // of its flight
+  // How long the ball's present flight keeps its centre in `region`.
+  double time_in(const Region& region, const Ball& ball, double until) const;
   // Ball number `i`'s flight: its time inside, and v^2 and v times it, into
   // the sums `s`.
   void add_interior_flight(Sums& s, std::size_t i, const Ball& ball, double until) const;
@@ -191,6 +199,9 @@ class GasStatistics final : public CollisionObserver {
   double radius_ = 0;
   double width_ = 0, height_ = 0;  // A1 - 2a, A2 - 2a: the box the centres move in
   Region interior_;  // the centres at least interior_margin_radii from every wall
+  // The strips of the interior beside the walls x = 0 and x = A1, as high
+  // as the walls' middles: the bulk that pushes on those middles.
+  Region beside_left_, beside_right_;
   double bin_width_ = 0;
   long long collisions_per_sample_ = 1;
 

@@ -43,9 +43,17 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   k.bulk_z_theory = {z, std::abs(slope) * eta_error};
   k.bulk_z_henderson = henderson_compressibility(eta);
   k.pair_contact_theory = hard_disc_fluid_contact_value(eta);
-  // P = Z n kT, n = eta / (pi a^2): dP / d eta = (Z + eta Z') kT / (pi a^2).
-  k.pressure_theory = {z * eta * kT / (pi * a * a),
-                       std::abs(z + eta * slope) * kT / (pi * a * a) * eta_error};
+  // P = Z n kT, n = eta / (pi a^2): dP / d eta = (Z + eta Z') kT / (pi a^2);
+  // for the push on the walls' middles, of the gas in front of them: the
+  // strips of the interior beside those middles, at their own eta and kT
+  // (their slow sound waves push on the middles too; lesson 11).
+  const double eta_beside = m.beside_walls_eta.value, kT_beside = m.beside_walls_kT.value;
+  const double z_beside = hard_disc_fluid_compressibility(eta_beside);
+  k.pressure_theory = {
+      z_beside * eta_beside * kT_beside / (pi * a * a),
+      std::abs(z_beside +
+               eta_beside * hard_disc_fluid_compressibility_slope(eta_beside)) *
+          kT_beside / (pi * a * a) * m.beside_walls_eta.error};
   // Enskog: rate = 2 (2a) n g sqrt(pi kT) with n g = (Z - 1) / (2 eta) n
   // = (Z - 1) / (2 pi a^2), so d rate / d eta = Z' 2 sqrt(pi kT) / (pi a);
   // the free path lambda = sqrt(pi kT / 2) / rate moves the other way.

@@ -36,8 +36,8 @@ struct KineticFigures {
   MeasuredFigures measured;  // the averages, the histogram, H
   bool many_balls = false;  // N >= kinetic_theory_fewest_balls: the bulk's theory applies
   Average bulk_z_theory;    // the reference Z at eta_int
-  double bulk_z_henderson = not_known;     // Henderson's at the same eta
-  Average pressure_theory;                 // Z_ref n_int kT: the bulk's pressure
+  double bulk_z_henderson = not_known;  // Henderson's at the same eta
+  Average pressure_theory;  // Z_ref n kT in the strips in front of the walls' middles
   double pair_contact_theory = not_known;  // the reference g(2a) at the interior's eta
   Average collision_rate_theory;           // Enskog's at eta_int, per ball per unit time
   Average mean_free_path_theory;           // Enskog's at eta_int
