@@ -666,8 +666,10 @@ TEST_SUITE("console") {
     }
     std::vector<int> numbers = {0, 1, -1, std::numeric_limits<int>::max(),
                                 std::numeric_limits<int>::min()};
-    for (int power = 10; power <= 1000000000; power *= 10)
+    for (int power = 10;; power *= 10) {  // 10 ... 10^9 (10^10 is past an int)
       for (const int n : {power - 1, power, power + 1, -power}) numbers.push_back(n);
+      if (power > std::numeric_limits<int>::max() / 10) break;
+    }
     char line[gas::longest_event_line];
     std::size_t checked = 0;
     for (std::size_t i = 0; i < times.size(); ++i) {

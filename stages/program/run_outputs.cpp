@@ -57,7 +57,8 @@ void OutputFile::fail() {
 }
 
 void OutputFile::write(std::string_view text) {
-  if (!file_ || failure_) return;
+  // (Nothing to write may come as a null pointer, which fwrite may not get.)
+  if (!file_ || failure_ || text.empty()) return;
   if (std::fwrite(text.data(), 1, text.size(), file_.get()) != text.size()) fail();
 }
 
