@@ -15,83 +15,14 @@ constexpr std::uint64_t scan_event = std::uint64_t{1} << 63;
 
 }  // namespace
 
-// ---- a ball's list of predictions: the record's first few, then the rest
+// ---- the order of events
 
-// (The earliest stays at the front: the list's key. The rare overflow is a
-// call of its own, so that the common case is small enough to be written
-// into its callers.)
-inline void CellGrid::add(int ball, Prediction p) {
-  Record& r = record(ball);
-  if (r.listed > 0 && earlier(ball, p, r.first[0])) std::swap(p, r.first[0]);
-  if (r.listed < predictions_kept) {
-    r.first[r.listed] = p;
-  } else {
-    add_more(ball, p);
-  }
-  ++r.listed;
-}
-
-void CellGrid::add_more(int ball, const Prediction& p) {
-  more_predictions_[ball].push_back(p);
-}
-
-// Drops the predictions for which `dropped` says so (the others close up),
-// and moves the earliest of the rest to the front.
-template <typename Dropped>
-void CellGrid::drop(int ball, Dropped dropped) {
-  Record& r = record(ball);
-  const std::uint32_t listed = r.listed;
-  // The rest of the list, if it is longer than the record holds (looked up
-  // once, not for each prediction).
-  std::vector<Prediction>* more =
-      listed > predictions_kept ? &more_predictions_.at(ball) : nullptr;
-  auto at = [&](std::uint32_t i) -> Prediction& {
-    return i < predictions_kept ? r.first[i] : (*more)[i - predictions_kept];
-  };
-  std::uint32_t kept = 0;
-  for (std::uint32_t i = 0; i < listed; ++i) {
-    const Prediction p = at(i);
-    if (dropped(p)) continue;
-    Prediction& slot = at(kept++);
-    slot = p;
-    if (earlier(ball, slot, r.first[0])) std::swap(slot, r.first[0]);
-  }
-  r.listed = kept;
-  if (more != nullptr) {
-    if (kept > predictions_kept) {
-      more->resize(kept - predictions_kept);
-    } else {
-      more_predictions_.erase(ball);
-    }
-  }
-}
-
-// The whole list dropped.
-void CellGrid::forget(int ball) {
-  if (record(ball).listed > predictions_kept) more_predictions_.erase(ball);
-  record(ball).listed = 0;
-}
-
-// The ball's key: the earliest of its list, or `never`.
-CellGrid::Prediction CellGrid::key(int ball) const {
-  const Record& r = record(ball);
-  return r.listed > 0 ? r.first[0] : Prediction{};
-}
-
-std::uint32_t CellGrid::longest_list() const {
-  std::uint32_t longest = 0;
-  for (const Record& r : records_) longest = std::max(longest, r.listed);
-  return longest;
-}
-
-// ---- the order of events, and which predictions still hold
-
-// The place of a ball's prediction in the calendar's order at equal times:
+// The place of a ball's event in the calendar's order at equal times:
 // crossings first (they change no row of R, only the grid's books, and may
-// bring in a prediction that belongs before the collisions at that time),
-// then the events of the scan in the scan's order.
-std::uint64_t CellGrid::place(int ball, const Prediction& p) const {
-  switch (p.partner) {
+// bring in an event that belongs before the collisions at that time), then
+// the events of the scan in the scan's order.
+std::uint64_t CellGrid::place(int ball, std::int32_t partner) const {
+  switch (partner) {
     case cross_x:
       return static_cast<std::uint64_t>(ball) << 1;
     case cross_y:
@@ -101,20 +32,34 @@ std::uint64_t CellGrid::place(int ball, const Prediction& p) const {
     case vertical_wall:
       return scan_event | scan_place(CollisionKind::vertical_wall, ball, 0);
     default:
-      return scan_event | scan_place(CollisionKind::balls, std::min(ball, p.partner),
-                                     std::max(ball, p.partner));
+      return scan_event | scan_place(CollisionKind::balls, std::min(ball, partner),
+                                     std::max(ball, partner));
   }
 }
 
-// Does p come before q in the scan's order (time, then place)?
-inline bool CellGrid::earlier(int ball, const Prediction& p, const Prediction& q) const {
-  return p.time < q.time || (p.time == q.time && place(ball, p) < place(ball, q));
+// Does e come before f in the scan's order (time, then place)?
+inline bool CellGrid::earlier(int ball, const Event& e, const Event& f) const {
+  return e.time < f.time ||
+         (e.time == f.time && place(ball, e.partner) < place(ball, f.partner));
 }
 
-// Made when the partner had the collisions it still has? (A ball's own
-// events are dropped with its list when it collides.)
-inline bool CellGrid::current(const Prediction& p) const {
-  return p.partner <= 0 || count_[static_cast<std::size_t>(p.partner)] == p.partner_count;
+// Keeps e as the earliest if it comes before it. (An event that never comes
+// is no event.)
+inline void CellGrid::keep_earlier(int ball, Event& earliest, Event e) const {
+  if (e.time < never && earlier(ball, e, earliest)) earliest = e;
+}
+
+// The event the ball holds.
+inline CellGrid::Event CellGrid::held(int ball) const {
+  return {record(ball).event_time, record(ball).partner};
+}
+
+std::uint64_t CellGrid::KeyPlaces::place(int ball) const {
+  const Record& r = grid->record(ball);
+  const std::int32_t key = r.key == its_event        ? r.partner
+                           : r.key == its_crossing_x ? cross_x
+                                                     : cross_y;
+  return grid->place(ball, key);
 }
 
 // ---- the cells' lists of balls
@@ -123,16 +68,17 @@ void CellGrid::insert(int ball, int column, int line) {
   Record& r = record(ball);
   std::int32_t& first = head(column, line);
   r.column = column;
-  r.line = line;
-  next_in_cell_[static_cast<std::size_t>(ball)] = first;
+  r.line = static_cast<std::uint32_t>(line);
+  r.next_in_cell = first;
   first = ball;
 }
 
 // (A cell holds a ball or two: its list is walked to find the one before.)
 void CellGrid::remove(int ball) {
-  std::int32_t* link = &head(record(ball).column, record(ball).line);
-  while (*link != ball) link = &next_in_cell_[static_cast<std::size_t>(*link)];
-  *link = next_in_cell_[static_cast<std::size_t>(ball)];
+  const Record& r = record(ball);
+  std::int32_t* link = &head(r.column, static_cast<int>(r.line));
+  while (*link != ball) link = &record(*link).next_in_cell;
+  *link = r.next_in_cell;
 }
 
 // Gathers into `neighbours_` the balls of a block of cells, `across` cells by
@@ -146,7 +92,7 @@ void CellGrid::remove(int ball) {
 template <int across, int down>
 std::size_t CellGrid::gather(int column, int line) {
   std::int32_t* out = neighbours_.data();
-  const std::int32_t* next = next_in_cell_.data();
+  const Record* records = records_.data();
   std::size_t found = 0;
   // (Both loops written out by the compiler: their counts are known, and
   // counting them costs as much as the cells' own steps.)
@@ -158,10 +104,11 @@ std::size_t CellGrid::gather(int column, int line) {
       std::int32_t k = heads[c];  // the cell's first ball, or 0
       out[found] = k;
       found += k != 0;
-      k = next[k];  // its second, or 0
+      k = records[k].next_in_cell;  // its second, or 0
       out[found] = k;
       found += k != 0;
-      for (k = next[k]; k != 0; k = next[k]) {  // a third and more: rare
+      for (k = records[k].next_in_cell; k != 0;
+           k = records[k].next_in_cell) {  // a third and more: rare
         // (Room for this ball and two for each cell of the block.)
         if (neighbours_.size() < found + 1 + 2 * across * down) {
           neighbours_.resize(2 * (found + 1 + 2 * across * down));
@@ -184,32 +131,31 @@ std::size_t CellGrid::gather(int column, int line) {
 bool CellGrid::edge_ahead(int ball, bool along_x) const {
   const Record& r = record(ball);
   const double velocity = along_x ? row(ball).vx : row(ball).vy;
-  const int cell = along_x ? r.column : r.line;
+  const int cell = along_x ? r.column : static_cast<int>(r.line);
   const int last = (along_x ? cells_.columns : cells_.rows) - 1;
   return ((velocity > 0) & (cell == last)) | ((velocity < 0) & (cell == 0));
 }
 
-void CellGrid::add_wall(int ball, std::int32_t wall) {
-  const double time = wall_time(*gas_, limits_, ball,
-                                wall == horizontal_wall ? CollisionKind::horizontal_wall
-                                                        : CollisionKind::vertical_wall);
-  if (time < never) add(ball, {time, wall, 0});
+inline CellGrid::Event CellGrid::wall_event(int ball, std::int32_t wall) const {
+  return {wall_time(*gas_, limits_, ball,
+                    wall == horizontal_wall ? CollisionKind::horizontal_wall
+                                            : CollisionKind::vertical_wall),
+          wall};
 }
 
 // A meeting, computed as the scan computes it: time_of_contact(N3, N4) with
 // N3 < N4.
-void CellGrid::add_pair(int ball, int other) {
+inline CellGrid::Event CellGrid::pair_event(int ball, int other) const {
   // (N4 found without a branch, which is lower being a coin toss: the xor of
   // the two numbers, less one of them, is the other.)
   const int n3 = std::min(ball, other), n4 = ball ^ other ^ n3;
-  const double time = pair_time(*gas_, n3, n4);
-  if (time < never) add(ball, {time, other, count_[static_cast<std::size_t>(other)]});
+  return {pair_time(*gas_, n3, n4), other};
 }
 
 // The next time the centre leaves its cell: through the side ahead of it in
 // x or in y, whichever comes first (none at the table's edge: the wall comes
 // first).
-CellGrid::Prediction CellGrid::next_crossing(int ball) const {
+CellGrid::Event CellGrid::next_crossing(int ball) const {
   const Record& r = record(ball);
   const Ball& row = this->row(ball);
   // The side ahead along x: the cell's right side if vx > 0, its left if
@@ -222,20 +168,25 @@ CellGrid::Prediction CellGrid::next_crossing(int ball) const {
   const bool open_y = (row.vy != 0) & !edge_ahead(ball, false);
   const double to_x =
       row.since + ((r.column + right) * cells_.cell_width - row.x) / row.vx;
-  const double to_y = row.since + ((r.line + up) * cells_.cell_height - row.y) / row.vy;
+  const double to_y =
+      row.since + ((static_cast<int>(r.line) + up) * cells_.cell_height - row.y) / row.vy;
   const double across = open_x ? to_x : never, down = open_y ? to_y : never;
   const bool x_first = across <= down;
-  return {x_first ? across : down, x_first ? cross_x : cross_y, 0};
+  return {x_first ? across : down, x_first ? cross_x : cross_y};
 }
 
-// A ball's list made afresh (its row of R is new): the walls along its cell's
-// edges that it moves towards, the balls of the 3 x 3 cells around it (but
-// `skip`, and only those numbered from `lowest`), its next crossing.
+// A ball's event made afresh (its row of R is new, or the partner of the
+// meeting it held has collided): the earliest of the walls along its cell's
+// edges that it moves towards and the balls of the 3 x 3 cells around it
+// (but `skip`, and only those numbered from `lowest`).
 void CellGrid::predict(int ball, int skip, int lowest) {
-  forget(ball);
-  if (edge_ahead(ball, false)) add_wall(ball, horizontal_wall);
-  if (edge_ahead(ball, true)) add_wall(ball, vertical_wall);
-  const std::size_t found = gather<3, 3>(record(ball).column - 1, record(ball).line - 1);
+  Record& r = record(ball);
+  Event earliest;  // none yet
+  if (edge_ahead(ball, false))
+    keep_earlier(ball, earliest, wall_event(ball, horizontal_wall));
+  if (edge_ahead(ball, true))
+    keep_earlier(ball, earliest, wall_event(ball, vertical_wall));
+  const std::size_t found = gather<3, 3>(r.column - 1, static_cast<int>(r.line) - 1);
   // Set aside the ball itself, `skip` and those below `lowest`, again by
   // arithmetic rather than by a branch.
   std::size_t kept = 0;
@@ -244,36 +195,48 @@ void CellGrid::predict(int ball, int skip, int lowest) {
     neighbours_[kept] = k;
     kept += static_cast<std::size_t>((k != ball) & (k != skip) & (k >= lowest));
   }
-  for (std::size_t i = 0; i < kept; ++i) add_pair(ball, neighbours_[i]);
-  const Prediction crossing = next_crossing(ball);
-  if (crossing.time < never) add(ball, crossing);
+  for (std::size_t i = 0; i < kept; ++i)
+    keep_earlier(ball, earliest, pair_event(ball, neighbours_[i]));
+  r.event_time = earliest.time;
+  r.partner = earliest.partner;
 }
 
-// The ball's key moved to its day in the calendar.
+// The ball's key moved to its day in the calendar: the earlier of its event
+// and its next crossing (the crossing first at equal times).
 void CellGrid::schedule(int ball) {
-  calendar_.schedule(ball, key(ball).time);
+  Record& r = record(ball);
+  const Event crossing = next_crossing(ball);
+  if (crossing.time <= r.event_time) {
+    r.key = crossing.partner == cross_x ? its_crossing_x : its_crossing_y;
+    calendar_.schedule(ball, crossing.time);
+  } else {
+    r.key = its_event;
+    calendar_.schedule(ball, r.event_time);
+  }
 }
 
 // A crossing: the ball moves to the next cell in the books, is predicted
-// against the balls of the cells that have just become its neighbours, learns
-// of the wall if the new cell lies along it, and gets its next crossing.
+// against the balls of the cells that have just become its neighbours,
+// learns of the wall if the new cell lies along it, and gets its next
+// crossing. The event it held stays, unless one of these comes first.
 void CellGrid::cross(int ball, bool along_x) {
   const Record& r = record(ball);
   const int step = (along_x ? row(ball).vx : row(ball).vy) > 0 ? 1 : -1;
   const int column = r.column + (along_x ? step : 0);
-  const int line = r.line + (along_x ? 0 : step);
+  const int line = static_cast<int>(r.line) + (along_x ? 0 : step);
   remove(ball);
   insert(ball, column, line);
-  drop(ball,
-       [](const Prediction& p) { return p.partner == cross_x || p.partner == cross_y; });
+  Event earliest = held(ball);
   // The new neighbours: the column (or row of cells) one further on.
   const std::size_t found = along_x ? gather<1, 3>(column + step, line - 1)
                                     : gather<3, 1>(column - 1, line + step);
-  for (std::size_t i = 0; i < found; ++i) add_pair(ball, neighbours_[i]);
+  for (std::size_t i = 0; i < found; ++i)
+    keep_earlier(ball, earliest, pair_event(ball, neighbours_[i]));
   if (edge_ahead(ball, along_x))
-    add_wall(ball, along_x ? vertical_wall : horizontal_wall);
-  const Prediction crossing = next_crossing(ball);
-  if (crossing.time < never) add(ball, crossing);
+    keep_earlier(ball, earliest,
+                 wall_event(ball, along_x ? vertical_wall : horizontal_wall));
+  record(ball).event_time = earliest.time;
+  record(ball).partner = earliest.partner;
   schedule(ball);
 }
 
@@ -283,16 +246,14 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   limits_ = limits;
   const auto n = gas.balls.size();
   // Cells at least 2a (1 + margin) wide, and not many more cells than balls
-  // (a huge table with a few balls needs few cells).
+  // (a huge table with a few balls needs few cells), nor 2^29 (a record
+  // keeps the line in 30 bits).
   cells_ = lay_out_cells(gas.width, gas.height, 2 * gas.radius * (1 + margin),
-                         4.0 * static_cast<double>(n) + 16);
+                         std::min(4.0 * static_cast<double>(n) + 16, 0x1p29));
 
   // The rows of R, read at random places like the books: in large pages too.
   ask_large_pages(gas.balls.data(), n * sizeof(Ball));
   records_.assign(n + 1, Record{});
-  more_predictions_.clear();
-  count_.assign(n + 1, 0);
-  next_in_cell_.assign(n + 1, 0);
   head_.assign(static_cast<std::size_t>(cells_.columns + 2) *
                    static_cast<std::size_t>(cells_.rows + 2),
                0);
@@ -303,7 +264,7 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
     const Point centre = centre_at(row(ball), gas.time);
     insert(ball, cells_.column_of(centre.x), cells_.row_of(centre.y));
   }
-  // Each pair once, in the list of its lower-numbered ball.
+  // Each pair once, by its lower-numbered ball.
   calendar_.reset(n);
   for (int ball = 1; ball <= count; ++ball) {
     predict(ball, 0, ball + 1);
@@ -314,25 +275,27 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
 // [anchor: grid-first]
 Collision CellGrid::first(const Gas& gas) {
   gas_ = &gas;
-  // The ball whose next event is the earliest; none: nothing will ever collide.
+  // The ball whose key is the earliest; none: nothing will ever collide.
   const KeyPlaces places(this);
   for (int ball = calendar_.earliest(places); ball != 0;
        ball = calendar_.earliest(places)) {
-    const Prediction p = key(ball);
-    if (!current(p)) {  // its partner has collided since: dropped
-      drop(ball, [&](const Prediction& q) { return !current(q); });
-      schedule(ball);
-    } else if (p.partner == cross_x || p.partner == cross_y) {
-      cross(ball, p.partner == cross_x);
-    } else if (p.partner > 0) {
-      return due_from({p.time, CollisionKind::balls, std::min(ball, p.partner),
-                       std::max(ball, p.partner)},
-                      gas.time);
+    const Record& r = record(ball);
+    if (r.key != its_event) {
+      cross(ball, r.key == its_crossing_x);
+    } else if (r.partner > 0) {
+      const int n3 = std::min(ball, r.partner), n4 = std::max(ball, r.partner);
+      if (pair_time(gas, n3, n4) != r.event_time) {
+        // The partner has collided since: its meeting is not what it was.
+        predict(ball, 0, 1);
+        schedule(ball);
+      } else {
+        return due_from({r.event_time, CollisionKind::balls, n3, n4}, gas.time);
+      }
     } else {
-      const CollisionKind wall = p.partner == horizontal_wall
+      const CollisionKind wall = r.partner == horizontal_wall
                                      ? CollisionKind::horizontal_wall
                                      : CollisionKind::vertical_wall;
-      return due_from({p.time, wall, ball, 0}, gas.time);
+      return due_from({r.event_time, wall, ball, 0}, gas.time);
     }
   }
   return Collision{};  // K = 0
@@ -344,14 +307,12 @@ void CellGrid::update(const Gas& gas, const Collision& done) {
   if (done.kind == CollisionKind::none) return;
   const bool pair = done.kind == CollisionKind::balls;
   gas_ = &gas;
-  // The collision counted: predictions of meetings with these balls are out
-  // of date.
-  ++count_[static_cast<std::size_t>(done.first)];
-  if (pair) ++count_[static_cast<std::size_t>(done.second)];
+  // Both balls predict afresh. (Meetings that other balls hold with them are
+  // found out of date when they come up.)
   predict(done.first, 0, 1);
   schedule(done.first);
   if (pair) {
-    predict(done.second, done.first, 1);  // the pair itself is in N1's list
+    predict(done.second, done.first, 1);  // the pair itself is N1's
     schedule(done.second);
   }
 }

@@ -10,24 +10,26 @@
 // just become its neighbours. A ball hears of a wall only in the cells along
 // that wall.
 //
-// Each ball keeps a short list of its predictions (the walls ahead of it, its
-// next crossing, the meetings it predicted), and an event calendar
-// (beyond/event_calendar.*) holds every ball once, keyed by the earliest
-// prediction in its list. After a collision the lists of its balls are made
-// afresh. The other balls may still hold predictions of meetings with them,
-// now worthless; rather than hunt those down, every ball counts its
-// collisions, a prediction of a meeting remembers the count its partner had,
-// and a prediction whose count is out of date is dropped when it comes up
-// (lazy invalidation). The work per collision does not grow with N.
+// Each ball keeps one event: the earliest of its meetings and walls that it
+// predicted (its next crossing is worked out again from its row and cell
+// when needed). An event calendar (beyond/event_calendar.*) holds every ball
+// once, keyed by the earlier of that event and its next crossing. After a
+// collision its two balls predict afresh. The other balls may still hold a
+// meeting with one of them, now worthless; rather than hunt those down, a
+// ball whose meeting comes up checks it: the meeting's time worked out again
+// from the two rows as they are now must be the time it holds, bit for bit.
+// If it is not, the partner has collided since, and the ball predicts afresh
+// (lazy invalidation). A ball needs no other event: every meeting it did not
+// keep is no earlier than the one it keeps, so it predicts again before any
+// of them is due. The work per collision does not grow with N.
 //
 // Where things live in memory matters as much as the work, once there are
 // more balls than the processor's caches hold (some 10^4): every event
 // happens somewhere else on the table, so what it needs comes from main
 // memory, a wait worth hundreds of arithmetic steps. So the grid keeps its
-// books small: a ball's cell and first predictions in one record of a cache
-// line, the collision counts and the cells' lists in arrays of 4-byte
-// numbers, all in large pages (beyond/large_pages.hpp); the rows of R it
-// reads from the gas.
+// books small: a ball's event, its cell and its link in the cell's list in
+// one record of 24 bytes, in large pages (beyond/large_pages.hpp); the rows
+// of R it reads from the gas.
 //
 // And a processor guesses which way each `if` goes, long before it knows;
 // a wrong guess throws away some fifteen steps of work. Whether a cell holds
@@ -50,7 +52,6 @@
 #pragma once
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "beyond/cell_layout.hpp"
@@ -83,8 +84,6 @@ class CellGrid final : public FirstCollisionFinder {
   int rows() const { return cells_.rows; }
   double cell_width() const { return cells_.cell_width; }
   double cell_height() const { return cells_.cell_height; }
-  // The longest list of predictions a ball holds now, for tests.
-  std::uint32_t longest_list() const;
   // How much wider than 2a a cell is at least, as a fraction of 2a. Two balls
   // in cells that are not neighbours are then more than 2a (1 + margin)
   // apart; the margin is far above the rounding of any centre (~1e-16 of the
@@ -92,33 +91,34 @@ class CellGrid final : public FirstCollisionFinder {
   // centre can never be wrong by enough to hide a collision.
   static constexpr double margin = 1.0 / 1024;
 
-  // How many predictions a record holds itself; a longer list (rare: a ball
-  // predicts a meeting only with the balls it approaches) goes on in
-  // `more_predictions_`.
-  static constexpr std::uint32_t predictions_kept = 3;
-
  private:
-  // One prediction in a ball's list: a meeting with the ball `partner`
-  // (predicted when the partner had had `partner_count` collisions), or an
-  // event of the ball alone, coded by a `partner` of 0 or less.
-  struct Prediction {
-    double time = never;
-    std::int32_t partner = 0;
-    std::uint32_t partner_count = 0;
+  // An event: a meeting with the ball `partner`, or an event of the ball
+  // alone, coded by a `partner` of 0 or less.
+  struct Event {
+    double time = never;  // model time
+    std::int32_t partner = horizontal_wall;
   };
   static constexpr std::int32_t horizontal_wall = 0;  // K = 1
   static constexpr std::int32_t vertical_wall = -1;   // K = 2
   static constexpr std::int32_t cross_x = -2;  // leaves its cell through a side x = const
   static constexpr std::int32_t cross_y = -3;  // ... through a side y = const
 
-  // A ball as the grid keeps it: its cell and its list, in one cache line.
-  struct alignas(64) Record {
-    std::uint32_t listed = 0;            // the length of its list of predictions,
-    Prediction first[predictions_kept];  // ... the first of them (the
-                                         // earliest in first[0]: its key)
-    std::int32_t column = 0, line = 0;   // its cell
+  // What a ball's key in the calendar is.
+  enum Key : std::uint32_t { its_event = 0, its_crossing_x = 1, its_crossing_y = 2 };
+
+  // A ball as the grid keeps it: its event, its cell, its key. (Cells have
+  // fewer than 2^29 lines: see rebuild.)
+  struct Record {
+    double event_time = never;               // its earliest meeting or wall predicted
+    std::int32_t partner = horizontal_wall;  // ... with: a ball, or a wall's code
+    std::int32_t next_in_cell =
+        0;                    // the next ball in its cell; 0 ends (record 0's stays 0)
+    std::int32_t column = 0;  // its cell's column ...
+    std::uint32_t line : 30 = 0;  // ... and line
+    std::uint32_t key : 2 =
+        its_event;  // which is its key: the event, or its next crossing
   };
-  static_assert(sizeof(Record) == 64, "a record is one cache line");
+  static_assert(sizeof(Record) == 24, "a record is 24 bytes");
 
   const Ball& row(int ball) const {  // its row of R
     return gas_->balls[static_cast<std::size_t>(ball - 1)];
@@ -135,23 +135,16 @@ class CellGrid final : public FirstCollisionFinder {
   }
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
 
-  // A ball's list of predictions.
-  void add(int ball, Prediction p);              // (keeps the earliest at the front)
-  void add_more(int ball, const Prediction& p);  // (past the record's room)
-  template <typename Dropped>
-  void drop(int ball, Dropped dropped);
-  void forget(int ball);
-  Prediction key(int ball) const;
-
-  std::uint64_t place(int ball, const Prediction& p) const;
-  bool current(const Prediction& p) const;
-  bool earlier(int ball, const Prediction& p, const Prediction& q) const;
+  std::uint64_t place(int ball, std::int32_t partner) const;
+  bool earlier(int ball, const Event& e, const Event& f) const;
+  Event held(int ball) const;
 
   void predict(int ball, int skip, int lowest);
-  void add_pair(int ball, int other);
-  void add_wall(int ball, std::int32_t wall);
+  void keep_earlier(int ball, Event& earliest, Event e) const;
+  Event pair_event(int ball, int other) const;
+  Event wall_event(int ball, std::int32_t wall) const;
   bool edge_ahead(int ball, bool along_x) const;
-  Prediction next_crossing(int ball) const;
+  Event next_crossing(int ball) const;
   void cross(int ball, bool along_x);
   void schedule(int ball);
   void insert(int ball, int column, int line);
@@ -163,25 +156,15 @@ class CellGrid final : public FirstCollisionFinder {
   CellLayout cells_;                 // the cells over the table (beyond/cell_layout.hpp)
   const Gas* gas_ = nullptr;         // the gas of the last call (its rows of R)
   LargePageVector<Record> records_;  // by ball number 1..N (0 unused)
-  // By ball, for the few whose list is longer than the record holds: the
-  // rest of it. (Not a list for every ball: 24 bytes a ball, for 10^6 balls
-  // more than the rows of R themselves.)
-  std::unordered_map<std::int32_t, std::vector<Prediction>> more_predictions_;
-  LargePageVector<std::uint32_t> count_;        // by ball: its collisions so far (wraps
-                                                // after 2^32: harmless unless a
-                                                // prediction waits that long)
-  LargePageVector<std::int32_t> next_in_cell_;  // by ball: the next in its cell; 0 ends
-                                                // (and next_in_cell_[0] stays 0)
-  LargePageVector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
-  std::vector<std::int32_t> neighbours_;        // gather's answer: balls of a block
-  EventCalendar calendar_;  // every ball with an event, keyed by the earliest
+  LargePageVector<std::int32_t> head_;    // by cell_index: a ball in the cell, or 0
+  std::vector<std::int32_t> neighbours_;  // gather's answer: balls of a block
+  EventCalendar calendar_;  // every ball with an event, keyed by the earlier of
+                            // its event and its next crossing
   // The calendar's question on a tie of times: the place of a ball's key.
   struct KeyPlaces final : EventCalendar::Places {
     explicit KeyPlaces(const CellGrid* of) : grid(of) {}
     const CellGrid* grid;
-    std::uint64_t place(int ball) const override {
-      return grid->place(ball, grid->key(ball));
-    }
+    std::uint64_t place(int ball) const override;
   };
 };
 
