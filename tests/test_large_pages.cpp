@@ -4,7 +4,7 @@
 // allocator only asks), so a test cannot require it. What the allocator does
 // decide is checked: a block of 2 MiB or more starts on a 2 MiB edge (a large
 // page can only back a block that covers one whole), a smaller block is
-// aligned as its type needs (the grid's records want 64 bytes), and a
+// aligned as its type needs (a type may ask for 64 bytes, a cache line), and a
 // vector in such memory keeps what is written to it through growing and
 // copying.
 #include <doctest/doctest.h>

@@ -1048,10 +1048,10 @@ int run(const Settings& settings) {
       "on a shared machine.)\n\n");
   if (grid_at_10k < 2e6 || grid_growth > 2) {
     add("Why the grid falls short here: it does the same work per collision at every N "
-        "— about 7 predictions, 1.3 cell crossings, 4 moves of a key in the calendar "
+        "— about 6 predictions, 1.3 cell crossings, 3.5 moves of a key in the calendar "
         "— but each event happens somewhere else on the table, so the rows, records "
         "and calendar entries it needs are at scattered places in memory, some 20 "
-        "cache lines a collision. Up to about 10^4 balls (some 150 bytes each) they "
+        "cache lines a collision. Up to about 10^4 balls (some 100 bytes each) they "
         "stay in the processor's caches; at 10^5 they come from main memory, and each "
         "read waits as long as the machine table's last figure says (measured as this "
         "report began; other programs sharing the cache change it from run to run). "
