@@ -161,6 +161,18 @@ TEST_SUITE("kinetic-theory") {
     CHECK(gas::henderson_relative_error(0.70) == doctest::Approx(0.1436).epsilon(0.01));
   }
 
+  TEST_CASE("hard-disc fluid: the pressure is Z N kT / A") {
+    // N discs of radius a on an area A = N pi a^2 / eta: P A / (N kT) = Z.
+    // (Equal within 1e-14: a handful of roundings of a number near 1.)
+    const double n = 400, a = 1.5, kT = 0.7;
+    for (double eta : {0.05, 0.3, 0.5, 0.7}) {
+      const double area = n * std::numbers::pi * a * a / eta;
+      CHECK(gas::hard_disc_fluid_pressure(eta, kT, a) * area / (n * kT) ==
+            doctest::Approx(gas::hard_disc_fluid_compressibility(eta)).epsilon(1e-14));
+    }
+    CHECK(std::isnan(gas::hard_disc_fluid_pressure(0.75, kT, a)));
+  }
+
   TEST_CASE("hard-disc fluid: contact value, slope and range") {
     // The 2D virial theorem, Z = 1 + 2 eta g(2a).
     for (double eta : {0.1, 0.3, 0.5, 0.65, 0.7}) {

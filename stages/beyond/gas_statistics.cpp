@@ -334,10 +334,9 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return s.push_x_middle / t;
     case pressure_minus_theory_q: {  // against the bulk's P = Z_ref n kT in
       // front of the middles, at this stretch's eta and kT there
-      const double eta_beside = value_of(beside_walls_eta_q, s);
-      return s.push_x_middle / t - hard_disc_fluid_compressibility(eta_beside) *
-                                       eta_beside * value_of(beside_walls_kT_q, s) /
-                                       (std::numbers::pi * a2);
+      return s.push_x_middle / t -
+             hard_disc_fluid_pressure(value_of(beside_walls_eta_q, s),
+                                      value_of(beside_walls_kT_q, s), radius_);
     }
     case beside_walls_eta_q:
       return s.beside_time / t / (beside_left_.area() + beside_right_.area()) *

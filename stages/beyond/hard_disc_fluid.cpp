@@ -41,6 +41,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace gas {
 
@@ -89,6 +90,11 @@ double hard_disc_fluid_compressibility(double area_fraction) {
   return z;
 }
 // [/anchor: reference-eos]
+
+double hard_disc_fluid_pressure(double area_fraction, double kT, double radius) {
+  return hard_disc_fluid_compressibility(area_fraction) * area_fraction * kT /
+         (std::numbers::pi * (radius * radius));
+}
 
 double hard_disc_fluid_compressibility_slope(double area_fraction) {
   if (!in_fluid_range(area_fraction)) return unknown;

@@ -55,6 +55,11 @@ double hard_disc_fluid_compressibility(double area_fraction);
 // fluctuations, follow: d(eta Z)/deta = Z + eta dZ/deta = (dP/drho) / kT.
 double hard_disc_fluid_compressibility_slope(double area_fraction);
 
+// The bulk fluid's pressure (a force per unit length: the table is a plane)
+// at area fraction eta and temperature kT, for discs of radius a:
+// P = Z n kT with n = eta / (pi a^2). NaN outside 0 <= eta <= 0.70.
+double hard_disc_fluid_pressure(double area_fraction, double kT, double radius);
+
 // The contact value g(2a) of the fluid's pair correlation, from the 2D virial
 // theorem Z = 1 + 2 eta g(2a): g(2a) = (Z - 1) / (2 eta). It is what Enskog's
 // collision rate needs. At eta = 0 it is 1 (the limit); NaN outside 0...0.70.

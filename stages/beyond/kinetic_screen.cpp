@@ -50,7 +50,7 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   const double eta_beside = m.beside_walls_eta.value, kT_beside = m.beside_walls_kT.value;
   const double z_beside = hard_disc_fluid_compressibility(eta_beside);
   k.pressure_theory = {
-      z_beside * eta_beside * kT_beside / (pi * a * a),
+      hard_disc_fluid_pressure(eta_beside, kT_beside, a),
       std::abs(z_beside +
                eta_beside * hard_disc_fluid_compressibility_slope(eta_beside)) *
           kT_beside / (pi * a * a) * m.beside_walls_eta.error};
