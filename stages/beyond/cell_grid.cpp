@@ -175,6 +175,26 @@ CellGrid::Event CellGrid::next_crossing(int ball) const {
   return {x_first ? across : down, x_first ? cross_x : cross_y};
 }
 
+// The rows of the first `count` balls gathered asked of memory at once,
+// before the predictions read them one after another: each may wait for main
+// memory, and the waits overlap. (A row of 40 bytes may span two cache
+// lines: both ends are asked for.)
+inline void CellGrid::ask_rows_early(std::size_t count) const {
+  for (std::size_t i = 0; i < count; ++i) {
+    const Ball& r = row(neighbours_[i]);
+    __builtin_prefetch(&r.x);
+    __builtin_prefetch(&r.since);
+  }
+}
+
+// The heads of the 3 x 3 cells around a ball asked of memory (a line of
+// cells each).
+inline void CellGrid::ask_cells_early(int ball) {
+  const Record& r = record(ball);
+  for (int l = -1; l <= 1; ++l)
+    __builtin_prefetch(&head(r.column - 1, static_cast<int>(r.line) + l));
+}
+
 // A ball's event made afresh (its row of R is new, or the partner of the
 // meeting it held has collided): the earliest of the walls along its cell's
 // edges that it moves towards and the balls of the 3 x 3 cells around it
@@ -195,6 +215,7 @@ void CellGrid::predict(int ball, int skip, int lowest) {
     neighbours_[kept] = k;
     kept += static_cast<std::size_t>((k != ball) & (k != skip) & (k >= lowest));
   }
+  ask_rows_early(kept);
   for (std::size_t i = 0; i < kept; ++i)
     keep_earlier(ball, earliest, pair_event(ball, neighbours_[i]));
   r.event_time = earliest.time;
@@ -230,6 +251,7 @@ void CellGrid::cross(int ball, bool along_x) {
   // The new neighbours: the column (or row of cells) one further on.
   const std::size_t found = along_x ? gather<1, 3>(column + step, line - 1)
                                     : gather<3, 1>(column - 1, line + step);
+  ask_rows_early(found);
   for (std::size_t i = 0; i < found; ++i)
     keep_earlier(ball, earliest, pair_event(ball, neighbours_[i]));
   if (edge_ahead(ball, along_x))
@@ -308,7 +330,9 @@ void CellGrid::update(const Gas& gas, const Collision& done) {
   const bool pair = done.kind == CollisionKind::balls;
   gas_ = &gas;
   // Both balls predict afresh. (Meetings that other balls hold with them are
-  // found out of date when they come up.)
+  // found out of date when they come up.) N2's cells asked of memory before
+  // N1 predicts, so that the waits overlap.
+  if (pair) ask_cells_early(done.second);
   predict(done.first, 0, 1);
   schedule(done.first);
   if (pair) {

@@ -140,6 +140,8 @@ class CellGrid final : public FirstCollisionFinder {
   Event held(int ball) const;
 
   void predict(int ball, int skip, int lowest);
+  void ask_rows_early(std::size_t count) const;
+  void ask_cells_early(int ball);
   void keep_earlier(int ball, Event& earliest, Event e) const;
   Event pair_event(int ball, int other) const;
   Event wall_event(int ball, std::int32_t wall) const;
