@@ -339,6 +339,31 @@ TEST_SUITE("strategies") {
     CHECK(check_same_runs(thousand, 30000, {Strategy::table, Strategy::grid}) == 30000);
   }
 
+  TEST_CASE(
+      "strategies: a held meeting whose partner changed at the moment of its own row") {
+    // Ball 1 bounces off the wall x = a at T = 1 and, from its new row, the
+    // grid's ball 1 predicts meeting ball 2 at T = 1.5 (gap 3, closing at
+    // 2). At the same T = 1 ball 2 is struck by ball 3 and turns away: the
+    // meeting held by ball 1 is out of date, though both rows were written at
+    // T = 1. The grid must not take equal moments for "unchanged" (it does
+    // not: the quick answer needs the partner's row strictly older); the
+    // scan's third collision is 1 and 2 at 1 + 5 / (sqrt(11) + 6), not 1.5.
+    Gas gas = table_with({{2, 10, -1, 0, 0}, {5, 10, -1, 0, 0}, {4, 13, 0, -1, 0}}, 0);
+    gas.display_step = 0.25;  // T0
+    const Run scan = run(gas, Strategy::scan, 3);
+    REQUIRE(scan.collisions.size() == 3);
+    CHECK(scan.collisions[0].kind == CollisionKind::vertical_wall);
+    CHECK(scan.collisions[0].time == 1);
+    CHECK(scan.collisions[1].kind == CollisionKind::balls);
+    CHECK(scan.collisions[1].time == 1);
+    CHECK(scan.collisions[2].first == 1);
+    CHECK(scan.collisions[2].second == 2);
+    // (Within 1e-12: a few roundings of numbers near 1.5.)
+    CHECK(scan.collisions[2].time ==
+          doctest::Approx(1 + 5 / (std::sqrt(11.0) + 6)).epsilon(1e-12));
+    CHECK(check_same_runs(gas, 3) == 3);
+  }
+
   TEST_CASE("strategies: a crowded cell and a gas of 20000") {
     // 48 balls packed in a corner of a 1000 x 1000 table: the grid makes no
     // more than 4 x 48 + 16 cells, ~70 wide, so all 48 start in one cell and

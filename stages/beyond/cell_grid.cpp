@@ -262,6 +262,16 @@ void CellGrid::cross(int ball, bool along_x) {
   schedule(ball);
 }
 
+// A quick answer, without working the meeting out again: the partner's row
+// is older than the ball's own. Rows are only rewritten by stage 5, at the
+// collision's time TC, never before the present; the ball predicted its
+// event after its own row was written; so a row of the partner's rewritten
+// since would be written no earlier than the ball's. (Equal times prove
+// nothing: two rows rewritten by one collision, or at one moment.)
+inline bool CellGrid::partner_unchanged(int ball, int partner) const {
+  return row(partner).since < row(ball).since;
+}
+
 // ---- the three calls
 
 void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
@@ -306,7 +316,7 @@ Collision CellGrid::first(const Gas& gas) {
       cross(ball, r.key == its_crossing_x);
     } else if (r.partner > 0) {
       const int n3 = std::min(ball, r.partner), n4 = std::max(ball, r.partner);
-      if (pair_time(gas, n3, n4) != r.event_time) {
+      if (!partner_unchanged(ball, r.partner) && pair_time(gas, n3, n4) != r.event_time) {
         // The partner has collided since: its meeting is not what it was.
         predict(ball, 0, 1);
         schedule(ball);

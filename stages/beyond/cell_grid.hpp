@@ -138,6 +138,7 @@ class CellGrid final : public FirstCollisionFinder {
   std::uint64_t place(int ball, std::int32_t partner) const;
   bool earlier(int ball, const Event& e, const Event& f) const;
   Event held(int ball) const;
+  bool partner_unchanged(int ball, int partner) const;
 
   void predict(int ball, int skip, int lowest);
   void ask_rows_early(std::size_t count) const;
