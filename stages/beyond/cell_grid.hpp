@@ -48,7 +48,8 @@
 // Assumptions: between two calls of `first`, the gas changes only by the
 // collision passed to `update` (stage 5's apply_collision); after anything
 // else that rewrites rows of R (the B key, a new scene), call `rebuild`.
-// Every centre stays on the table (stage 5 keeps it there).
+// Every centre stays on the table (stage 5 keeps it there), and no row was
+// written after the present moment gas.time (stage 2 refuses such a SINCE).
 #pragma once
 
 #include <cstdint>
