@@ -311,6 +311,30 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   }
 }
 
+// The calendar's look ahead (beyond/event_calendar.hpp): step 0, the ball's
+// record and row of R; step 1 (the record now in the cache), the heads of
+// its 3 x 3 cells, and its partner's count, record and row.
+void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
+  const auto both_ends = [](const void* from, std::size_t bytes) {
+    __builtin_prefetch(from);
+    __builtin_prefetch(static_cast<const char*>(from) + bytes - 1);
+  };
+  if (step == 0) {
+    __builtin_prefetch(&grid->record(ball));
+    both_ends(&grid->row(ball), sizeof(Ball));
+    return;
+  }
+  const Record& r = grid->record(ball);
+  for (int l = r.line - 1; l <= r.line + 1; ++l)
+    both_ends(&grid->head_[grid->cell_index(r.column - 1, l)], 3 * sizeof(std::int32_t));
+  const std::int32_t partner = r.first[0].partner;
+  if (partner > 0) {
+    __builtin_prefetch(&grid->count_[static_cast<std::size_t>(partner)]);
+    __builtin_prefetch(&grid->record(partner));
+    both_ends(&grid->row(partner), sizeof(Ball));
+  }
+}
+
 // [anchor: grid-first]
 Collision CellGrid::first(const Gas& gas) {
   gas_ = &gas;

@@ -182,6 +182,7 @@ class CellGrid final : public FirstCollisionFinder {
     std::uint64_t place(int ball) const override {
       return grid->place(ball, grid->key(ball));
     }
+    void prefetch(int ball, int step) const override;
   };
 };
 

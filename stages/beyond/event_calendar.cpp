@@ -28,6 +28,14 @@ constexpr std::size_t most_waits_sampled = 1 << 16;
 // three.)
 constexpr std::uint64_t looking_per_question = 16;
 
+// The look ahead's stages, in days before a ball's day (a day holds about
+// two events): the line of pages, the first ball's entry, the second
+// ball's entry, the owner's step 0, the owner's step 1.
+constexpr std::int32_t pages_ahead = 8;
+constexpr std::int32_t first_entries_ahead = 4;
+constexpr std::int32_t second_entries_ahead = 3;
+constexpr std::int32_t owner_ahead[2] = {2, 1};
+
 }  // namespace
 
 void EventCalendar::reset(std::size_t count) {
@@ -140,6 +148,28 @@ int EventCalendar::earliest_of_today(const Places& places) {
   return best;
 }
 
+// Today has moved on a day: the look ahead's stages, each on its day ahead
+// (see the header). Reads only entries and pages asked for a day before.
+void EventCalendar::look_ahead(const Places& places) const {
+  const auto first_on = [&](std::int32_t ahead) {
+    return page_[static_cast<std::uint64_t>(today_ + ahead) & page_mask_];
+  };
+  const auto entry_of = [&](std::int32_t ball) -> const Entry& {
+    return entries_[static_cast<std::size_t>(ball)];
+  };
+  __builtin_prefetch(&page_[static_cast<std::uint64_t>(today_ + pages_ahead) & page_mask_]);
+  __builtin_prefetch(&entry_of(first_on(first_entries_ahead)));
+  __builtin_prefetch(&entry_of(entry_of(first_on(second_entries_ahead)).next));
+  for (int step = 0; step < 2; ++step) {
+    const std::int32_t day = today_ + owner_ahead[step];
+    for (std::int32_t ball = first_on(owner_ahead[step]); ball != 0;) {
+      const Entry& entry = entry_of(ball);
+      if (entry.day == day) places.prefetch(ball, step);
+      ball = entry.next;
+    }
+  }
+}
+
 // [anchor: calendar-earliest]
 int EventCalendar::earliest(const Places& places) {
   if (on_calendar_ == 0) return 0;
@@ -161,6 +191,7 @@ int EventCalendar::earliest(const Places& places) {
     } else {
       ++today_;
       ++looked_;
+      look_ahead(places);
     }
   }
 }

@@ -22,6 +22,20 @@
 // calendar was when it was last asked (model time runs forward); a key set
 // earlier all the same (round-off can place an event a hair in the past)
 // counts as today's. At most 2^31 - 1 balls.
+//
+// Looking ahead (beyond the article, and beyond Brown): past some 10^4
+// balls, each event waits for main memory, line after line (its entry, the
+// ball's books, its neighbours' books), each line's address read from the
+// line before. But the calendar knows which balls come next: those on the
+// pages of the next few days. So whenever today moves on a day, the calendar
+// asks memory early, in a pipeline over the days ahead, for what those
+// balls' events will read: the line of pages some days ahead; a few days
+// ahead, the entries of the first balls on a page; then, nearer, it asks its
+// owner (`Places::prefetch`) for the ball's own books and, a day later, for
+// the lines those point to. Each stage reads only lines an earlier stage
+// asked for a day or more before (a day holds about two events), so no
+// stage waits for memory itself; and a prefetch is only a hint to the
+// processor: nothing it does changes an answer.
 #pragma once
 
 #include <cstdint>
@@ -38,6 +52,12 @@ class EventCalendar {
   class Places {
    public:
     virtual std::uint64_t place(int ball) const = 0;
+    // The calendar's look ahead: `ball`'s event is a day or two away; start
+    // fetching from memory what the owner will read for it (no result
+    // changes). `step` 0: the lines the owner finds by the ball's number;
+    // step 1, a day later: the lines those point to (step 0's are in the
+    // cache then). None by default.
+    virtual void prefetch(int /*ball*/, int /*step*/) const {}
 
    protected:
     ~Places() = default;
@@ -75,6 +95,7 @@ class EventCalendar {
   void take_off_page(int ball);
   void lay_out();
   int earliest_of_today(const Places& places);
+  void look_ahead(const Places& places) const;
 
   LargePageVector<Entry> entries_;      // by ball number 1..N (entry 0 unused)
   std::vector<double> waits_;           // lay_out's scratch (a sample of the keys)
