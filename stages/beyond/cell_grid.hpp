@@ -169,6 +169,7 @@ class CellGrid final : public FirstCollisionFinder {
     explicit KeyPlaces(const CellGrid* of) : grid(of) {}
     const CellGrid* grid;
     std::uint64_t place(int ball) const override;
+    void prefetch(int ball, int step) const override;
   };
 };
 

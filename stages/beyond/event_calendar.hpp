@@ -22,6 +22,23 @@
 // calendar was when it was last asked (model time runs forward); a key set
 // earlier all the same (round-off can place an event a hair in the past)
 // counts as today's. At most 2^31 - 1 balls.
+//
+// Looking ahead (beyond the article, and beyond Brown): past some 10^4
+// balls, each event waits for main memory, line after line (the ball's
+// entry, its books, its neighbours' books), each line's address read from
+// the line before. But the calendar knows which balls come next: those on
+// the pages of the next few days. So whenever today moves on a day, it asks
+// memory early, in a pipeline over the days ahead (a day holds about two
+// events), for what those balls' events will read: nine days ahead the
+// line of pages, five and four days ahead the entries of a page's first
+// two balls; three, two and one day ahead it asks its owner
+// (`Places::prefetch`, steps 0, 1, 2) for the ball's own books, then for
+// the lines those point to, then for the lines those point to. No stage
+// waits for memory itself: each reads only lines that an earlier stage
+// asked for a day before. A prefetch is only a hint to the processor:
+// nothing it does changes an answer. With fewer than 8192 balls the books
+// fit in the caches and the calendar does not look ahead (there it would
+// cost more than it saves).
 #pragma once
 
 #include <cstdint>
@@ -33,11 +50,20 @@ namespace gas {
 
 class EventCalendar {
  public:
-  // What the calendar asks its owner when two keys have the same time: the
-  // second part of a ball's key, its place in the scan's order.
+  // What the calendar asks its owner: when two keys have the same time, the
+  // second part of a ball's key, its place in the scan's order; and when it
+  // looks ahead, to prefetch.
   class Places {
    public:
     virtual std::uint64_t place(int ball) const = 0;
+    // The calendar's look ahead: `ball`'s event is a few days away; start
+    // fetching from memory what the owner will read for it (no result may
+    // change). `step` 0, three days before: the lines the owner finds by
+    // the ball's number; step 1, a day later: the lines whose addresses
+    // step 0's lines hold (in the cache by then); step 2: the lines whose
+    // addresses step 1's lines hold. None by default.
+    virtual void prefetch(int /*ball*/, int /*step*/) const {}
+    static constexpr int steps = 3;  // how many steps the owner is asked for
 
    protected:
     ~Places() = default;
@@ -53,6 +79,11 @@ class EventCalendar {
   // The ball with the smallest key (time, then place), or 0 if no ball has
   // an event.
   int earliest(const Places& places);
+
+  // For the owner's look ahead: asks memory early for what `schedule(ball)`
+  // will read: step 0, the ball's entry; step 1 (the entry in the cache by
+  // then), the page of its day.
+  void prefetch(int ball, int step) const;
 
   // How many times it was laid out since `reset` (for tests).
   long long layouts() const { return layouts_; }
@@ -75,6 +106,7 @@ class EventCalendar {
   void take_off_page(int ball);
   void lay_out();
   int earliest_of_today(const Places& places);
+  void look_ahead(const Places& places) const;
 
   LargePageVector<Entry> entries_;      // by ball number 1..N (entry 0 unused)
   std::vector<double> waits_;           // lay_out's scratch (a sample of the keys)
@@ -88,6 +120,7 @@ class EventCalendar {
   std::int32_t today_ = 0;              // the day of the earliest key
   std::uint64_t questions_ = 0;         // calls of `earliest` since the last check
   std::uint64_t looked_ = 0;            // balls compared and empty days turned since
+  bool looking_ahead_ = false;          // does it prefetch (enough balls)?
 };
 
 }  // namespace gas
