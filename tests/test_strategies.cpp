@@ -452,6 +452,37 @@ TEST_SUITE("strategies") {
     CHECK(one.columns == 1);
     CHECK(one.cell_width == 5);
     CHECK(one.rows == 6);
+    // At most so many along each side, when asked: the cells only longer.
+    const gas::CellLayout narrow = gas::lay_out_cells(1000, 900, 1, 1e6, 250, 300);
+    CHECK(narrow.columns == 250);
+    CHECK(narrow.rows == 300);
+    CHECK(narrow.cell_width == 4);
+  }
+
+  TEST_CASE("strategies: a table longer than a grid record can number its columns") {
+    // 20000 balls in one line of cells 200000 a long: 4 x 20000 + 16 cells
+    // would be allowed, 99900 fit, but a record numbers columns in 16 bits:
+    // the grid lays out 65535, each only longer, and still finds every
+    // collision. The balls move in pairs towards each other, 10 apart, at
+    // speed 1: the first 10000 collisions are the pairs (1, 2), (3, 4), ...,
+    // all at T = 4 exactly, in the scan's order of ties.
+    std::string text = "a 1\nT0 50\nA1 200000\nA2 3\nN 20000\n";
+    for (int i = 0; i < 20000; ++i)
+      text += fmt::format("ball {} 1.5 {} 0\n", 5 + 10 * i, i % 2 == 0 ? 1 : -1);
+    const Gas line = scene_text(text);
+    gas::CellGrid grid;
+    grid.rebuild(line, gas::centre_limits(line));
+    CHECK(grid.columns() == 0xFFFF);
+    CHECK(grid.rows() == 1);
+    const Run run_of_grid = run(line, Strategy::grid, 10000);
+    REQUIRE(run_of_grid.collisions.size() == 10000);
+    int as_expected = 0;
+    for (int k = 0; k < 10000; ++k) {
+      const Collision& c = run_of_grid.collisions[static_cast<std::size_t>(k)];
+      as_expected += c.kind == CollisionKind::balls && c.time == 4 &&
+                     c.first == 2 * k + 1 && c.second == 2 * k + 2;
+    }
+    CHECK(as_expected == 10000);
   }
 }
 

@@ -67,18 +67,18 @@ std::uint64_t CellGrid::KeyPlaces::place(int ball) const {
 void CellGrid::insert(int ball, int column, int line) {
   Record& r = record(ball);
   std::int32_t& first = head(column, line);
-  r.column = column;
+  r.column = static_cast<std::uint32_t>(column);
   r.line = static_cast<std::uint32_t>(line);
-  r.next_in_cell = first;
+  next_in_cell_[static_cast<std::size_t>(ball)] = first;
   first = ball;
 }
 
 // (A cell holds a ball or two: its list is walked to find the one before.)
 void CellGrid::remove(int ball) {
   const Record& r = record(ball);
-  std::int32_t* link = &head(r.column, static_cast<int>(r.line));
-  while (*link != ball) link = &record(*link).next_in_cell;
-  *link = r.next_in_cell;
+  std::int32_t* link = &head(static_cast<int>(r.column), static_cast<int>(r.line));
+  while (*link != ball) link = &next_in_cell_[static_cast<std::size_t>(*link)];
+  *link = next_in_cell_[static_cast<std::size_t>(ball)];
 }
 
 // Gathers into `neighbours_` the balls of a block of cells, `across` cells by
@@ -92,7 +92,7 @@ void CellGrid::remove(int ball) {
 template <int across, int down>
 std::size_t CellGrid::gather(int column, int line) {
   std::int32_t* out = neighbours_.data();
-  const Record* records = records_.data();
+  const std::int32_t* next = next_in_cell_.data();
   std::size_t found = 0;
   // (Both loops written out by the compiler: their counts are known, and
   // counting them costs as much as the cells' own steps.)
@@ -104,11 +104,10 @@ std::size_t CellGrid::gather(int column, int line) {
       std::int32_t k = heads[c];  // the cell's first ball, or 0
       out[found] = k;
       found += k != 0;
-      k = records[k].next_in_cell;  // its second, or 0
+      k = next[k];  // its second, or 0
       out[found] = k;
       found += k != 0;
-      for (k = records[k].next_in_cell; k != 0;
-           k = records[k].next_in_cell) {  // a third and more: rare
+      for (k = next[k]; k != 0; k = next[k]) {  // a third and more: rare
         // (Room for this ball and two for each cell of the block.)
         if (neighbours_.size() < found + 1 + 2 * across * down) {
           neighbours_.resize(2 * (found + 1 + 2 * across * down));
@@ -278,14 +277,16 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
   limits_ = limits;
   const auto n = gas.balls.size();
   // Cells at least 2a (1 + margin) wide, and not many more cells than balls
-  // (a huge table with a few balls needs few cells), nor 2^29 (a record
-  // keeps the line in 30 bits).
+  // (a huge table with a few balls needs few cells), nor more columns and
+  // lines than a record's 16 and 14 bits number (a wider cell only holds
+  // more balls).
   cells_ = lay_out_cells(gas.width, gas.height, 2 * gas.radius * (1 + margin),
-                         std::min(4.0 * static_cast<double>(n) + 16, 0x1p29));
+                         4.0 * static_cast<double>(n) + 16, 0xFFFF, 0x3FFF);
 
   // The rows of R, read at random places like the books: in large pages too.
   ask_large_pages(gas.balls.data(), n * sizeof(Ball));
   records_.assign(n + 1, Record{});
+  next_in_cell_.assign(n + 1, 0);
   head_.assign(static_cast<std::size_t>(cells_.columns + 2) *
                    static_cast<std::size_t>(cells_.rows + 2),
                0);
@@ -308,8 +309,8 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
 // `ball` will read. Step 0: its record and row of R. Step 1 (the record in
 // the cache by then): the heads of its 3 x 3 cells, and for the partner of
 // the meeting it holds, its record, row and calendar entry. Step 2 (those in
-// the cache): for the first ball of each of those cells its record (the
-// link to the next) and row, and the partner's page in the calendar and the
+// the cache): for the first ball of each of those cells its link to the
+// next and its row, and the partner's page in the calendar and the
 // heads of its 3 x 3 cells (most are the ball's own). (Tried: a step 3 for
 // the cells' second balls; not faster.)
 void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
@@ -324,7 +325,7 @@ void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
           3 * sizeof(std::int32_t));
   };
   if (step == 0) {
-    both_ends(&grid->record(ball), sizeof(Record));
+    __builtin_prefetch(&grid->record(ball));
     both_ends(&grid->row(ball), sizeof(Ball));
     return;
   }
@@ -349,7 +350,7 @@ void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
     for (int c = 0; c < 3; ++c) {
       // (An empty cell's 0 asks for ball 1's row: no branch on a coin toss.)
       const std::int32_t k = heads[c];
-      both_ends(&grid->record(k), sizeof(Record));
+      __builtin_prefetch(&grid->next_in_cell_[static_cast<std::size_t>(k)]);
       both_ends(&grid->row(k + (k == 0)), sizeof(Ball));
     }
   }

@@ -27,9 +27,11 @@
 // more balls than the processor's caches hold (some 10^4): every event
 // happens somewhere else on the table, so what it needs comes from main
 // memory, a wait worth hundreds of arithmetic steps. So the grid keeps its
-// books small: a ball's event, its cell and its link in the cell's list in
-// one record of 24 bytes, in large pages (beyond/large_pages.hpp); the rows
-// of R it reads from the gas.
+// books small: a ball's event and its cell in one record of 16 bytes, four to
+// a cache line; the links of the cells' lists in an array of 4-byte numbers
+// (which at 10^5 balls still fits in a processor's second-level cache); all
+// in large pages (beyond/large_pages.hpp); the rows of R it reads from the
+// gas.
 //
 // And a processor guesses which way each `if` goes, long before it knows;
 // a wrong guess throws away some fifteen steps of work. Whether a cell holds
@@ -107,19 +109,18 @@ class CellGrid final : public FirstCollisionFinder {
   // What a ball's key in the calendar is.
   enum Key : std::uint32_t { its_event = 0, its_crossing_x = 1, its_crossing_y = 2 };
 
-  // A ball as the grid keeps it: its event, its cell, its key. (Cells have
-  // fewer than 2^29 lines: see rebuild.)
+  // A ball as the grid keeps it: its event, its cell, its key; four records
+  // to a cache line. (Cells have at most 2^16 - 1 columns and 2^14 - 1
+  // lines: see rebuild.)
   struct Record {
     double event_time = never;               // its earliest meeting or wall predicted
     std::int32_t partner = horizontal_wall;  // ... with: a ball, or a wall's code
-    std::int32_t next_in_cell =
-        0;                    // the next ball in its cell; 0 ends (record 0's stays 0)
-    std::int32_t column = 0;  // its cell's column ...
-    std::uint32_t line : 30 = 0;  // ... and line
+    std::uint32_t column : 16 = 0;           // its cell's column ...
+    std::uint32_t line : 14 = 0;             // ... and line
     std::uint32_t key : 2 =
         its_event;  // which is its key: the event, or its next crossing
   };
-  static_assert(sizeof(Record) == 24, "a record is 24 bytes");
+  static_assert(sizeof(Record) == 16, "a record is 16 bytes");
 
   const Ball& row(int ball) const {  // its row of R
     return gas_->balls[static_cast<std::size_t>(ball - 1)];
@@ -160,8 +161,10 @@ class CellGrid final : public FirstCollisionFinder {
   CellLayout cells_;                 // the cells over the table (beyond/cell_layout.hpp)
   const Gas* gas_ = nullptr;         // the gas of the last call (its rows of R)
   LargePageVector<Record> records_;  // by ball number 1..N (0 unused)
-  LargePageVector<std::int32_t> head_;    // by cell_index: a ball in the cell, or 0
-  std::vector<std::int32_t> neighbours_;  // gather's answer: balls of a block
+  LargePageVector<std::int32_t> next_in_cell_;  // by ball: the next in its cell; 0 ends
+                                                // (and next_in_cell_[0] stays 0)
+  LargePageVector<std::int32_t> head_;          // by cell_index: a ball in the cell, or 0
+  std::vector<std::int32_t> neighbours_;        // gather's answer: balls of a block
   EventCalendar calendar_;  // every ball with an event, keyed by the earlier of
                             // its event and its next crossing
   // The calendar's question on a tie of times: the place of a ball's key.

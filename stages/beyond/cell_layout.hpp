@@ -53,11 +53,13 @@ struct CellLayout {
 // Cells at least `smallest` across on a table `width` x `height`, but not many
 // more than `most` of them (a huge table with few balls needs few cells): if
 // there would be more, both sides get fewer cells, in proportion, so each cell
-// is only larger.
-inline CellLayout lay_out_cells(double width, double height, double smallest,
-                                double most) {
-  double columns = std::min(cells_along(width, smallest), most);
-  double rows = std::min(cells_along(height, smallest), most);
+// is only larger. And at most `most_columns` across and `most_rows` along y
+// (a cell grid that numbers them in a few bits asks for that).
+inline CellLayout lay_out_cells(double width, double height, double smallest, double most,
+                                double most_columns = HUGE_VAL,
+                                double most_rows = HUGE_VAL) {
+  double columns = std::min({cells_along(width, smallest), most, most_columns});
+  double rows = std::min({cells_along(height, smallest), most, most_rows});
   if (columns * rows > most) {
     const double shrink = std::sqrt(most / (columns * rows));
     columns = std::max(1.0, std::floor(columns * shrink));
