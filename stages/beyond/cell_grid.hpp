@@ -16,12 +16,14 @@
 // once, keyed by the earlier of that event and its next crossing. After a
 // collision its two balls predict afresh. The other balls may still hold a
 // meeting with one of them, now worthless; rather than hunt those down, a
-// ball whose meeting comes up checks it: the meeting's time worked out again
-// from the two rows as they are now must be the time it holds, bit for bit.
-// If it is not, the partner has collided since, and the ball predicts afresh
-// (lazy invalidation). A ball needs no other event: every meeting it did not
-// keep is no earlier than the one it keeps, so it predicts again before any
-// of them is due. The work per collision does not grow with N.
+// ball whose meeting comes up checks it: unless the partner's row is older
+// than its own (then it cannot have changed since), the meeting's time
+// worked out again from the two rows as they are now must be the time it
+// holds, bit for bit. If it is not, the partner has collided since, and the
+// ball predicts afresh (lazy invalidation). A ball needs no other event:
+// every meeting it did not keep is no earlier than the one it keeps, so it
+// predicts again before any of them is due. The work per collision does not
+// grow with N.
 //
 // Where things live in memory matters as much as the work, once there are
 // more balls than the processor's caches hold (some 10^4): every event
@@ -117,8 +119,8 @@ class CellGrid final : public FirstCollisionFinder {
     std::int32_t partner = horizontal_wall;  // ... with: a ball, or a wall's code
     std::uint32_t column : 16 = 0;           // its cell's column ...
     std::uint32_t line : 14 = 0;             // ... and line
-    std::uint32_t key : 2 =
-        its_event;  // which is its key: the event, or its next crossing
+    // Which is its key: the event, or its next crossing.
+    std::uint32_t key : 2 = its_event;
   };
   static_assert(sizeof(Record) == 16, "a record is 16 bytes");
 
