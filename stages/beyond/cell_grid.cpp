@@ -49,9 +49,13 @@ inline void CellGrid::keep_earlier(int ball, Event& earliest, Event e) const {
   if (e.time < never && earlier(ball, e, earliest)) earliest = e;
 }
 
-// The event the ball holds.
+// The event the ball holds, and an event given it to hold.
 inline CellGrid::Event CellGrid::held(int ball) const {
   return {record(ball).event_time, record(ball).partner};
+}
+inline void CellGrid::hold(int ball, const Event& e) {
+  record(ball).event_time = e.time;
+  record(ball).partner = e.partner;
 }
 
 std::uint64_t CellGrid::KeyPlaces::place(int ball) const {
@@ -135,11 +139,14 @@ bool CellGrid::edge_ahead(int ball, bool along_x) const {
   return ((velocity > 0) & (cell == last)) | ((velocity < 0) & (cell == 0));
 }
 
+// K of a wall's code.
+inline CollisionKind CellGrid::wall_kind(std::int32_t wall) {
+  return wall == horizontal_wall ? CollisionKind::horizontal_wall
+                                 : CollisionKind::vertical_wall;
+}
+
 inline CellGrid::Event CellGrid::wall_event(int ball, std::int32_t wall) const {
-  return {wall_time(*gas_, limits_, ball,
-                    wall == horizontal_wall ? CollisionKind::horizontal_wall
-                                            : CollisionKind::vertical_wall),
-          wall};
+  return {wall_time(*gas_, limits_, ball, wall_kind(wall)), wall};
 }
 
 // A meeting, computed as the scan computes it: time_of_contact(N3, N4) with
@@ -174,24 +181,37 @@ CellGrid::Event CellGrid::next_crossing(int ball) const {
   return {x_first ? across : down, x_first ? cross_x : cross_y};
 }
 
-// The rows of the first `count` balls gathered asked of memory at once,
-// before the predictions read them one after another: each may wait for main
-// memory, and the waits overlap. (A row of 40 bytes may span two cache
-// lines: both ends are asked for.)
-inline void CellGrid::ask_rows_early(std::size_t count) const {
-  for (std::size_t i = 0; i < count; ++i) {
-    const Ball& r = row(neighbours_[i]);
-    __builtin_prefetch(&r.x);
-    __builtin_prefetch(&r.since);
-  }
+// ---- asking memory early (the processor's prefetch: a hint, which changes
+// no result)
+
+namespace {
+
+// A block of `bytes` asked for: both ends, as it may span two cache lines.
+inline void ask_early(const void* from, std::size_t bytes) {
+  __builtin_prefetch(from);
+  __builtin_prefetch(static_cast<const char*>(from) + bytes - 1);
 }
 
-// The heads of the 3 x 3 cells around a ball asked of memory (a line of
-// cells each).
-inline void CellGrid::ask_cells_early(int ball) {
-  const Record& r = record(ball);
+}  // namespace
+
+// A ball's row of R (40 bytes).
+inline void CellGrid::ask_row_early(int ball) const {
+  ask_early(&row(ball), sizeof(Ball));
+}
+
+// The heads of the 3 x 3 cells around the cell of record r (three in a row,
+// three rows).
+inline void CellGrid::ask_cells_early(const Record& r) const {
   for (int l = -1; l <= 1; ++l)
-    __builtin_prefetch(&head(r.column - 1, static_cast<int>(r.line) + l));
+    ask_early(&head_[cell_index(r.column - 1, static_cast<int>(r.line) + l)],
+              3 * sizeof(std::int32_t));
+}
+
+// The rows of the first `count` balls gathered, asked for at once before
+// the predictions read them one after another: each may wait for main
+// memory, and the waits overlap.
+inline void CellGrid::ask_rows_early(std::size_t count) const {
+  for (std::size_t i = 0; i < count; ++i) ask_row_early(neighbours_[i]);
 }
 
 // A ball's event made afresh (its row of R is new, or the partner of the
@@ -217,8 +237,7 @@ void CellGrid::predict(int ball, int skip, int lowest) {
   ask_rows_early(kept);
   for (std::size_t i = 0; i < kept; ++i)
     keep_earlier(ball, earliest, pair_event(ball, neighbours_[i]));
-  r.event_time = earliest.time;
-  r.partner = earliest.partner;
+  hold(ball, earliest);
 }
 
 // The ball's key moved to its day in the calendar: the earlier of its event
@@ -256,8 +275,7 @@ void CellGrid::cross(int ball, bool along_x) {
   if (edge_ahead(ball, along_x))
     keep_earlier(ball, earliest,
                  wall_event(ball, along_x ? vertical_wall : horizontal_wall));
-  record(ball).event_time = earliest.time;
-  record(ball).partner = earliest.partner;
+  hold(ball, earliest);
   schedule(ball);
 }
 
@@ -314,35 +332,25 @@ void CellGrid::rebuild(const Gas& gas, const CentreLimits& limits) {
 // heads of its 3 x 3 cells (most are the ball's own). (Tried: a step 3 for
 // the cells' second balls; not faster.)
 void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
-  const auto both_ends = [](const void* from, std::size_t bytes) {
-    __builtin_prefetch(from);
-    __builtin_prefetch(static_cast<const char*>(from) + bytes - 1);
-  };
-  const auto heads_around = [&](const Record& r) {
-    for (int l = -1; l <= 1; ++l)
-      both_ends(
-          &grid->head_[grid->cell_index(r.column - 1, static_cast<int>(r.line) + l)],
-          3 * sizeof(std::int32_t));
-  };
   if (step == 0) {
     __builtin_prefetch(&grid->record(ball));
-    both_ends(&grid->row(ball), sizeof(Ball));
+    grid->ask_row_early(ball);
     return;
   }
   const Record& r = grid->record(ball);
   const std::int32_t partner = r.partner;
   if (step == 1) {
-    heads_around(r);
+    grid->ask_cells_early(r);
     if (partner > 0) {
-      both_ends(&grid->record(partner), sizeof(Record));
-      both_ends(&grid->row(partner), sizeof(Ball));
+      __builtin_prefetch(&grid->record(partner));
+      grid->ask_row_early(partner);
       grid->calendar_.prefetch(partner, 0);
     }
     return;
   }
   if (partner > 0) {
     grid->calendar_.prefetch(partner, 1);
-    heads_around(grid->record(partner));
+    grid->ask_cells_early(grid->record(partner));
   }
   for (int l = -1; l <= 1; ++l) {
     const std::int32_t* heads =
@@ -351,7 +359,7 @@ void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
       // (An empty cell's 0 asks for ball 1's row: no branch on a coin toss.)
       const std::int32_t k = heads[c];
       __builtin_prefetch(&grid->next_in_cell_[static_cast<std::size_t>(k)]);
-      both_ends(&grid->row(k + (k == 0)), sizeof(Ball));
+      grid->ask_row_early(k + (k == 0));
     }
   }
 }
@@ -367,19 +375,18 @@ Collision CellGrid::first(const Gas& gas) {
     if (r.key != its_event) {
       cross(ball, r.key == its_crossing_x);
     } else if (r.partner > 0) {
-      const int n3 = std::min(ball, r.partner), n4 = std::max(ball, r.partner);
-      if (!partner_unchanged(ball, r.partner) && pair_time(gas, n3, n4) != r.event_time) {
+      if (!partner_unchanged(ball, r.partner) &&
+          pair_event(ball, r.partner).time != r.event_time) {
         // The partner has collided since: its meeting is not what it was.
         predict(ball, 0, 1);
         schedule(ball);
       } else {
-        return due_from({r.event_time, CollisionKind::balls, n3, n4}, gas.time);
+        return due_from({r.event_time, CollisionKind::balls, std::min(ball, r.partner),
+                         std::max(ball, r.partner)},
+                        gas.time);
       }
     } else {
-      const CollisionKind wall = r.partner == horizontal_wall
-                                     ? CollisionKind::horizontal_wall
-                                     : CollisionKind::vertical_wall;
-      return due_from({r.event_time, wall, ball, 0}, gas.time);
+      return due_from({r.event_time, wall_kind(r.partner), ball, 0}, gas.time);
     }
   }
   return Collision{};  // K = 0
@@ -394,7 +401,7 @@ void CellGrid::update(const Gas& gas, const Collision& done) {
   // Both balls predict afresh. (Meetings that other balls hold with them are
   // found out of date when they come up.) N2's cells asked of memory before
   // N1 predicts, so that the waits overlap.
-  if (pair) ask_cells_early(done.second);
+  if (pair) ask_cells_early(record(done.second));
   predict(done.first, 0, 1);
   schedule(done.first);
   if (pair) {

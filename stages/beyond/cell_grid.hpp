@@ -142,13 +142,16 @@ class CellGrid final : public FirstCollisionFinder {
   std::uint64_t place(int ball, std::int32_t partner) const;
   bool earlier(int ball, const Event& e, const Event& f) const;
   Event held(int ball) const;
+  void hold(int ball, const Event& e);
   bool partner_unchanged(int ball, int partner) const;
 
   void predict(int ball, int skip, int lowest);
+  void ask_row_early(int ball) const;
+  void ask_cells_early(const Record& r) const;
   void ask_rows_early(std::size_t count) const;
-  void ask_cells_early(int ball);
   void keep_earlier(int ball, Event& earliest, Event e) const;
   Event pair_event(int ball, int other) const;
+  static CollisionKind wall_kind(std::int32_t wall);
   Event wall_event(int ball, std::int32_t wall) const;
   bool edge_ahead(int ball, bool along_x) const;
   Event next_crossing(int ball) const;

@@ -30,7 +30,7 @@ constexpr std::uint64_t looking_per_question = 16;
 
 // The calendar looks ahead only for this many balls or more: with fewer, the
 // books fit in a second-level cache (512 KiB a core on the machines
-// measured; some 150 bytes a ball), nothing waits for memory, and the look
+// measured; some 100 bytes a ball), nothing waits for memory, and the look
 // ahead's work is a loss (measured on build/gas: 13 % slower at 3000 balls,
 // even at 6000, 15 % faster at 10^4).
 constexpr std::size_t look_ahead_from = 1 << 13;
@@ -74,7 +74,7 @@ std::int32_t EventCalendar::day_of(double time) const {
 
 void EventCalendar::put_on_page(int ball) {
   Entry& entry = entries_[static_cast<std::size_t>(ball)];
-  std::int32_t& first = page_[static_cast<std::uint64_t>(entry.day) & page_mask_];
+  std::int32_t& first = page(entry.day);
   entry.next = first;
   first = ball;
 }
@@ -82,7 +82,7 @@ void EventCalendar::put_on_page(int ball) {
 // (A page holds a ball or two: its list is walked to find the one before.)
 void EventCalendar::take_off_page(int ball) {
   const Entry& entry = entries_[static_cast<std::size_t>(ball)];
-  std::int32_t* link = &page_[static_cast<std::uint64_t>(entry.day) & page_mask_];
+  std::int32_t* link = &page(entry.day);
   while (*link != ball) link = &entries_[static_cast<std::size_t>(*link)].next;
   *link = entry.next;
 }
@@ -142,8 +142,7 @@ void EventCalendar::lay_out() {
 // (the balls of later years on the same page are passed over).
 int EventCalendar::earliest_of_today(const Places& places) {
   int best = 0;
-  for (std::int32_t ball = page_[static_cast<std::uint64_t>(today_) & page_mask_];
-       ball != 0;) {
+  for (std::int32_t ball = page(today_); ball != 0;) {
     const Entry& entry = entries_[static_cast<std::size_t>(ball)];
     ++looked_;
     if (entry.day == today_) {
@@ -162,14 +161,11 @@ int EventCalendar::earliest_of_today(const Places& places) {
 // page's third ball and later: rare, and read as they come). (Ball 0's
 // entry, on an empty page, is read as any other: its `next` is 0.)
 void EventCalendar::look_ahead(const Places& places) const {
-  const auto first_on = [&](std::int32_t ahead) {
-    return page_[static_cast<std::uint64_t>(today_ + ahead) & page_mask_];
-  };
+  const auto first_on = [&](std::int32_t ahead) { return page(today_ + ahead); };
   const auto entry_of = [&](std::int32_t ball) -> const Entry& {
     return entries_[static_cast<std::size_t>(ball)];
   };
-  __builtin_prefetch(
-      &page_[static_cast<std::uint64_t>(today_ + pages_ahead) & page_mask_]);
+  __builtin_prefetch(&page(today_ + pages_ahead));
   __builtin_prefetch(&entry_of(first_on(first_entries_ahead)));
   __builtin_prefetch(&entry_of(entry_of(first_on(second_entries_ahead)).next));
   for (int step = 0; step < Places::steps; ++step) {
@@ -188,7 +184,7 @@ void EventCalendar::prefetch(int ball, int step) const {
   if (step == 0) {
     __builtin_prefetch(&entry);
   } else if (entry.day != off) {
-    __builtin_prefetch(&page_[static_cast<std::uint64_t>(entry.day) & page_mask_]);
+    __builtin_prefetch(&page(entry.day));
   }
 }
 

@@ -102,6 +102,13 @@ class EventCalendar {
   static constexpr std::int32_t off = -1;  // a `day` for: not on the calendar
 
   std::int32_t day_of(double time) const;
+  // The page of a day: its first ball, or 0 (pages reused year after year).
+  std::int32_t& page(std::int32_t day) {
+    return page_[static_cast<std::uint64_t>(day) & page_mask_];
+  }
+  const std::int32_t& page(std::int32_t day) const {
+    return page_[static_cast<std::uint64_t>(day) & page_mask_];
+  }
   void put_on_page(int ball);
   void take_off_page(int ball);
   void lay_out();

@@ -193,6 +193,7 @@ class GasStatistics final : public CollisionObserver {
   // Ball number `i`'s flight: its time inside, and v^2 and v times it, into
   // the sums `s`.
   void add_interior_flight(Sums& s, std::size_t i, const Ball& ball, double until) const;
+  bool clear_of_strips(const Ball& ball, double until) const;
 
   std::size_t balls_ = 0;
   double kT_ = 0;
