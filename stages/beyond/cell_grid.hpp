@@ -137,6 +137,10 @@ class CellGrid final : public FirstCollisionFinder {
                static_cast<std::size_t>(cells_.columns + 2) +
            static_cast<std::size_t>(column + 1);
   }
+  // How far apart in cell_index `lines` lines of cells are.
+  std::size_t lines_of_cells(int lines) const {
+    return static_cast<std::size_t>(lines) * static_cast<std::size_t>(cells_.columns + 2);
+  }
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
 
   std::uint64_t place(int ball, std::int32_t partner) const;
@@ -147,7 +151,16 @@ class CellGrid final : public FirstCollisionFinder {
 
   void predict(int ball, int skip, int lowest);
   void ask_row_early(int ball) const;
-  void ask_cells_early(const Record& r) const;
+  // A block of cells: `across` cells by `down` lines from the cell `first`
+  // (a cell_index).
+  struct Block {
+    std::size_t first;
+    int across, down;
+  };
+  Block block_around(const Record& r) const;
+  Block block_ahead(int ball) const;
+  void ask_heads_early(const Block& block) const;
+  void ask_first_balls_early(const Block& block) const;
   void ask_rows_early(std::size_t count) const;
   void keep_earlier(int ball, Event& earliest, Event e) const;
   Event pair_event(int ball, int other) const;

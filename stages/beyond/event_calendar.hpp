@@ -29,11 +29,11 @@
 // the line before. But the calendar knows which balls come next: those on
 // the pages of the next few days. So whenever today moves on a day, it asks
 // memory early, in a pipeline over the days ahead (a day holds about two
-// events), for what those balls' events will read: nine days ahead the
-// line of pages, five and four days ahead the entries of a page's first
-// two balls; three, two and one day ahead it asks its owner
-// (`Places::prefetch`, steps 0, 1, 2) for the ball's own books, then for
-// the lines those point to, then for the lines those point to. No stage
+// events), for what those balls' events will read: ten days ahead the
+// line of pages, six and five days ahead the entries of a page's first two
+// balls; four, three, two and one day ahead it asks its owner
+// (`Places::prefetch`, steps 0 to 3) for the ball's own books, then for
+// the lines those point to, and so on, a step a day. No stage
 // waits for memory itself: each reads only lines that an earlier stage
 // asked for a day before. A prefetch is only a hint to the processor:
 // nothing it does changes an answer. With fewer than 8192 balls the books
@@ -58,12 +58,12 @@ class EventCalendar {
     virtual std::uint64_t place(int ball) const = 0;
     // The calendar's look ahead: `ball`'s event is a few days away; start
     // fetching from memory what the owner will read for it (no result may
-    // change). `step` 0, three days before: the lines the owner finds by
+    // change). `step` 0, four days before: the lines the owner finds by
     // the ball's number; step 1, a day later: the lines whose addresses
-    // step 0's lines hold (in the cache by then); step 2: the lines whose
-    // addresses step 1's lines hold. None by default.
+    // step 0's lines hold (in the cache by then); steps 2 and 3: the lines
+    // whose addresses the step before's lines hold. None by default.
     virtual void prefetch(int /*ball*/, int /*step*/) const {}
-    static constexpr int steps = 3;  // how many steps the owner is asked for
+    static constexpr int steps = 4;  // how many steps the owner is asked for
 
    protected:
     ~Places() = default;
