@@ -265,18 +265,21 @@ void CellGrid::predict(int ball, int skip, int lowest) {
   hold(ball, earliest);
 }
 
-// The ball's key moved to its day in the calendar: the earlier of its event
-// and its next crossing (the crossing first at equal times).
-void CellGrid::schedule(int ball) {
+// The ball's key: the earlier of its event and its next crossing (the
+// crossing first at equal times), marked in its record; and the key moved to
+// its day in the calendar.
+double CellGrid::choose_key(int ball) {
   Record& r = record(ball);
   const Event crossing = next_crossing(ball);
   if (crossing.time <= r.event_time) {
     r.key = crossing.partner == cross_x ? its_crossing_x : its_crossing_y;
-    calendar_.schedule(ball, crossing.time);
-  } else {
-    r.key = its_event;
-    calendar_.schedule(ball, r.event_time);
+    return crossing.time;
   }
+  r.key = its_event;
+  return r.event_time;
+}
+void CellGrid::schedule(int ball) {
+  calendar_.schedule(ball, choose_key(ball));
 }
 
 // A crossing: the ball moves to the next cell in the books, is predicted
@@ -448,15 +451,20 @@ void CellGrid::update(const Gas& gas, const Collision& done) {
   const bool pair = done.kind == CollisionKind::balls;
   gas_ = &gas;
   // Both balls predict afresh. (Meetings that other balls hold with them are
-  // found out of date when they come up.) N2's cells asked of memory before
-  // N1 predicts, so that the waits overlap.
+  // found out of date when they come up.) So that the waits for memory
+  // overlap, N2's cells are asked for before N1 predicts, and N1's page in
+  // the calendar before N2 predicts; N1's key goes on it after. (The order in
+  // which keys go into the calendar changes nothing: it orders them by the
+  // keys alone.)
   if (pair) ask_heads_early(block_around(record(done.second)));
   predict(done.first, 0, 1);
-  schedule(done.first);
+  const double first_key = choose_key(done.first);
   if (pair) {
+    calendar_.ask_day_early(first_key);
     predict(done.second, done.first, 1);  // the pair itself is N1's
     schedule(done.second);
   }
+  calendar_.schedule(done.first, first_key);
 }
 // [/anchor: grid-update]
 

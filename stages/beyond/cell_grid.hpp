@@ -169,6 +169,7 @@ class CellGrid final : public FirstCollisionFinder {
   bool edge_ahead(int ball, bool along_x) const;
   Event next_crossing(int ball) const;
   void cross(int ball, bool along_x);
+  double choose_key(int ball);
   void schedule(int ball);
   void insert(int ball, int column, int line);
   void remove(int ball);

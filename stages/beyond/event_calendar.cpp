@@ -189,6 +189,10 @@ void EventCalendar::prefetch(int ball, int step) const {
   }
 }
 
+void EventCalendar::ask_day_early(double time) const {
+  if (laid_out_) __builtin_prefetch(&page(day_of(time)));
+}
+
 // [anchor: calendar-earliest]
 int EventCalendar::earliest(const Places& places) {
   if (on_calendar_ == 0) return 0;

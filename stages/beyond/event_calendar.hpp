@@ -85,6 +85,10 @@ class EventCalendar {
   // then), the page of its day.
   void prefetch(int ball, int step) const;
 
+  // Asks memory early for the page that a key of `time` would go on (a
+  // hint: `schedule` may follow while the page is on its way).
+  void ask_day_early(double time) const;
+
   // How many times it was laid out since `reset` (for tests).
   long long layouts() const { return layouts_; }
 
