@@ -29,11 +29,15 @@ constexpr std::size_t most_waits_sampled = 1 << 16;
 constexpr std::uint64_t looking_per_question = 16;
 
 // The calendar looks ahead only for this many balls or more: with fewer, the
-// books fit in a second-level cache (512 KiB a core on the machines
-// measured; some 100 bytes a ball), nothing waits for memory, and the look
-// ahead's work is a loss (measured on build/gas: 13 % slower at 3000 balls,
-// even at 6000, 15 % faster at 10^4).
-constexpr std::size_t look_ahead_from = 1 << 13;
+// books (some 100 bytes a ball) are read from the caches (second level: 512
+// KiB a core on the machines measured; the third, a few MiB), waits are
+// short, and the look ahead's work is a loss. Measured on build/gas, medians
+// of 5 interleaved runs against the same build without the look ahead: 13 %
+// slower at 3000 balls, even at 6000; 15 % slower at 10^4 and 8 % at 15000
+// (since the look ahead asks for a crossing's own cells: with the 3 x 3 cells
+// asked for every event, and books of 146 bytes a ball, it was 15 % faster at
+// 10^4); 14 % faster at 20000, 26 % at 30000.
+constexpr std::size_t look_ahead_from = 1 << 14;
 
 // The look ahead's stages (see the header), in days before a ball's day:
 // the line of pages, the first ball's entry, the second ball's entry, the

@@ -36,9 +36,9 @@
 // the lines those point to, and so on, a step a day. No stage
 // waits for memory itself: each reads only lines that an earlier stage
 // asked for a day before. A prefetch is only a hint to the processor:
-// nothing it does changes an answer. With fewer than 8192 balls the books
-// fit in the caches and the calendar does not look ahead (there it would
-// cost more than it saves).
+// nothing it does changes an answer. With fewer than 16384 balls the books
+// are read from the caches and the calendar does not look ahead (there it
+// would cost more than it saves).
 #pragma once
 
 #include <cstdint>
