@@ -391,8 +391,8 @@ void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
   switch (step) {
     case 1:
       grid->ask_heads_early(grid->block_ahead(ball));
-      // (A crossing also takes the ball out of its own cell's list, and puts
-      // it at the head of the next cell's.)
+      // (A crossing also takes the ball out of its own cell's list, which
+      // starts at its cell's head.)
       if (r.key != its_event)
         __builtin_prefetch(
             &grid->head_[grid->cell_index(r.column, static_cast<int>(r.line))]);

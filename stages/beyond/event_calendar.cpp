@@ -34,16 +34,16 @@ constexpr std::uint64_t looking_per_question = 16;
 // short, and the look ahead's work is a loss. Measured on build/gas, medians
 // of 5 interleaved runs against the same build without the look ahead: 13 %
 // slower at 3000 balls, even at 6000; 15 % slower at 10^4 and 8 % at 15000
-// (since the look ahead asks for a crossing's own cells: with the 3 x 3 cells
-// asked for every event, and books of 146 bytes a ball, it was 15 % faster at
-// 10^4); 14 % faster at 20000, 26 % at 30000.
+// (since the look ahead asks for the cells a crossing gathers: when it asked
+// for the 3 x 3 cells of every event, and the books were 146 bytes a ball,
+// it was 15 % faster at 10^4); 14 % faster at 20000, 26 % at 30000.
 constexpr std::size_t look_ahead_from = 1 << 14;
 
 // The look ahead's stages (see the header), in days before a ball's day:
 // the line of pages, the first ball's entry, the second ball's entry, the
 // owner's steps 0 to 3. (Tried: a day further for every stage; not faster.
 // The owner's fourth step, for a meeting's partner, was 6 % faster at 10^6
-// balls, even at 10^5.)
+// balls, and no slower at 10^5.)
 constexpr std::int32_t pages_ahead = 10;
 constexpr std::int32_t first_entries_ahead = 6;
 constexpr std::int32_t second_entries_ahead = 5;
