@@ -265,9 +265,9 @@ void CellGrid::predict(int ball, int skip, int lowest) {
   hold(ball, earliest);
 }
 
-// The ball's key: the earlier of its event and its next crossing (the
-// crossing first at equal times), marked in its record; and the key moved to
-// its day in the calendar.
+// The ball's key, marked in its record: the earlier of its event and its
+// next crossing (the crossing first at equal times). schedule also moves the
+// key to its day in the calendar.
 double CellGrid::choose_key(int ball) {
   Record& r = record(ball);
   const Event crossing = next_crossing(ball);
@@ -394,8 +394,7 @@ void CellGrid::KeyPlaces::prefetch(int ball, int step) const {
       // (A crossing also takes the ball out of its own cell's list, which
       // starts at its cell's head.)
       if (r.key != its_event)
-        __builtin_prefetch(
-            &grid->head_[grid->cell_index(r.column, static_cast<int>(r.line))]);
+        __builtin_prefetch(&grid->head(r.column, static_cast<int>(r.line)));
       if (partner > 0) {
         __builtin_prefetch(&grid->record(partner));
         grid->ask_row_early(partner);

@@ -131,17 +131,18 @@ class CellGrid final : public FirstCollisionFinder {
   const Record& record(int ball) const {
     return records_[static_cast<std::size_t>(ball)];
   }
-  // Cells are numbered row by row in a frame one cell wider on every side.
-  std::size_t cell_index(int column, int line) const {
-    return static_cast<std::size_t>(line + 1) *
-               static_cast<std::size_t>(cells_.columns + 2) +
-           static_cast<std::size_t>(column + 1);
-  }
   // How far apart in cell_index `lines` lines of cells are.
   std::size_t lines_of_cells(int lines) const {
     return static_cast<std::size_t>(lines) * static_cast<std::size_t>(cells_.columns + 2);
   }
+  // Cells are numbered row by row in a frame one cell wider on every side.
+  std::size_t cell_index(int column, int line) const {
+    return lines_of_cells(line + 1) + static_cast<std::size_t>(column + 1);
+  }
   std::int32_t& head(int column, int line) { return head_[cell_index(column, line)]; }
+  const std::int32_t& head(int column, int line) const {
+    return head_[cell_index(column, line)];
+  }
 
   std::uint64_t place(int ball, std::int32_t partner) const;
   bool earlier(int ball, const Event& e, const Event& f) const;
