@@ -62,8 +62,8 @@ inline constexpr double smallest_magnitude = 1e-75;
 inline constexpr double largest_magnitude = 1e75;
 
 // The most balls a 'random COUNT SEED SPEED' line may ask for (data/README.md).
-// (10^6: research runs of hard discs go that far, and the cell grid keeps a
-// collision's cost within twice that at 10^3 there; lesson 10.)
+// (10^6: research runs of hard discs go that far, and the cell grid runs
+// them in under 100 bytes a ball; lesson 11.)
 inline constexpr double most_random_balls = 1e6;
 
 // What a 'random COUNT SEED SPEED' line asks for, its numbers checked: COUNT

@@ -150,7 +150,8 @@ void read_strategy(ArgumentReader& reader, Options& options) {
   const std::string name = reader.value();
   options.strategy = strategy_named(name);
   if (!options.strategy)
-    throw UsageError(fmt::format("--strategy takes scan, table or grid, not '{}'", name));
+    throw UsageError(
+        fmt::format("--strategy takes scan, table, plain-grid or grid, not '{}'", name));
 }
 
 // --pictures P: where pictures are taken.
@@ -234,7 +235,7 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
            [--mode balls|trails|stats|none] [--events FILE] [--dump FILE] [--csv FILE]
            [--structure FILE]
            [--cols N] [--rows N] [--step] [--trace] [--bell]
-           [--strategy scan|table|grid] [--pictures collisions|steps]
+           [--strategy scan|table|plain-grid|grid] [--pictures collisions|steps]
        gas --help | --version
 
   SCENE            a scene file (format: data/README.md or `man gas`), or a
@@ -265,8 +266,9 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
                    stage 6 says when the picture is frozen at a collision
   --bell           ring the terminal bell on collisions
   --strategy S     how stage 4 finds the first collision: scan (the article's),
-                   table (each ball's next event) or grid (cells and an event
-                   queue); the same collisions, at different speeds. Default:
+                   table (each ball's next event), plain-grid (cells and an
+                   event calendar) or grid (the same, tuned); the same
+                   collisions, at different speeds. Default:
                    scan up to )" +
          std::to_string(most_balls_for_scan) + R"( balls, table up to )" +
          std::to_string(most_balls_for_table) + R"(, grid beyond
