@@ -26,12 +26,12 @@
 // [anchor: step-record]
 // 1. Books of 16 bytes. A ball's event (time, partner, kind), its key's kind
 //    and its cell share one record of 16 bytes, four to a cache line: the
-//    kinds in 3 bits each, the cell's column and row in 13 bits each (so at
-//    most 8191 cells along a side; a larger table gets wider cells). The
-//    cells' lists are chains of 4-byte links (a head for each cell, a next
-//    for each ball), 400 KB at 10^5 balls, which stay in the processor's
-//    second-level cache; and a frame of empty cells around the table lets a
-//    block of 3 x 3 cells be read without a test at the edges.
+//    kinds in 3 bits each, the cell's column and cell row in 13 bits each
+//    (so at most 8191 cells along a side; a larger table gets wider cells).
+//    The cells' lists are chains of 4-byte links (a head for each cell, a
+//    next for each ball), 400 KB at 10^5 balls, which stay in the
+//    processor's second-level cache; and a frame of empty cells around the
+//    table lets a block of 3 x 3 cells be read without a test at the edges.
 // [/anchor: step-record]
 //
 // [anchor: step-walls]
@@ -142,6 +142,7 @@ class CellGrid final : public FirstCollisionFinder {
 
  private:
   // A ball as the grid keeps it (step 1).
+  // [anchor: grid-record]
   struct Record {
     double event_time = never;           // its event: when,
     std::int32_t partner = 0;            // with which ball (a meeting's), else 0,
@@ -151,6 +152,7 @@ class CellGrid final : public FirstCollisionFinder {
     std::uint32_t cell_row : 13 = 0;
   };
   static_assert(sizeof(Record) == 16, "a record is 16 bytes");
+  // [/anchor: grid-record]
 
   const Ball& R(int ball) const {  // its column of R
     return gas_->balls[static_cast<std::size_t>(ball - 1)];

@@ -46,7 +46,7 @@ inline bool comes_before(double a, std::uint64_t pa, double b, std::uint64_t pb)
 // [/anchor: scan-place]
 
 // What a grid keeps for a ball: K's kinds of event, and the crossing of a
-// side of its cell (which changes no row of R, only the grid's books).
+// side of its cell (which changes no column of R, only the grid's books).
 // [anchor: grid-event]
 enum class EventKind : std::uint8_t {
   none = 0,             // no event: nothing lies ahead of the ball
@@ -69,9 +69,9 @@ struct Event {
 };
 
 // The place of an event of `ball` among events at the same time: crossings
-// first (they rewrite no row, and may bring in an event that belongs before
-// the collisions at that time), by ball; then the scan's events, in the
-// scan's order.
+// first (they rewrite no column of R, and may bring in an event that belongs
+// before the collisions at that time), by ball; then the scan's events, in
+// the scan's order.
 inline std::uint64_t grid_place(int ball, const Event& e) {
   constexpr std::uint64_t after_crossings = std::uint64_t{1} << 63;
   const auto n = static_cast<std::uint64_t>(ball);

@@ -147,6 +147,7 @@ template <void (CellGrid::*ask)(int) const>
 }
 
 // Each stage reads only what the stage before asked for, a day earlier.
+// [anchor: grid-look-ahead]
 [[gnu::always_inline]] inline void CellGrid::look_ahead() const {
   const std::int32_t today = calendar_.today();
   __builtin_prefetch(calendar_.page_address(today + pages_ahead));
@@ -159,6 +160,7 @@ template <void (CellGrid::*ask)(int) const>
   ask_for_day<&CellGrid::ask_for_first_balls>(today + first_balls_ahead);
   ask_for_day<&CellGrid::ask_for_partner_balls>(today + partner_balls_ahead);
 }
+// [/anchor: grid-look-ahead]
 
 void CellGrid::KeyPlaces::new_day() const {
   if (grid->looking_ahead_) grid->look_ahead();

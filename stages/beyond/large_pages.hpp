@@ -82,10 +82,10 @@ using LargePageVector = std::vector<T, LargePageAllocator<T>>;
 // than the processor keeps at hand). MADV_HUGEPAGE alone only marks memory
 // already in use for the system's sweeper, which moves it minutes later, if
 // at all; MADV_COLLAPSE moves it at once (Linux 6.1 and later; an older
-// kernel refuses it). Measured on build/gas at 10^6 balls to T = 5 (7 paired
-// rounds, processor time): without MADV_COLLAPSE 1.18x the time, without
-// either 1.8x; at 10^5 (4 MB of columns) no difference. Only the speed
-// depends on it.
+// kernel refuses it). Measured on build/gas at 10^6 balls to T = 5 (paired
+// rounds of processor time): without MADV_COLLAPSE 1.13x to 1.18x the time,
+// without either some 1.8x; at 10^5 (4 MB of columns) no difference. Only
+// the speed depends on it.
 inline void ask_large_pages(const void* data, std::size_t bytes) {
 #ifdef MADV_HUGEPAGE
 #ifdef MADV_COLLAPSE

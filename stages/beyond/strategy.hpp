@@ -13,7 +13,7 @@
 //
 // Assumptions: as for the table and the grids — between two calls of `first`
 // the gas changes only by the collision passed to `update`; anything else
-// that rewrites rows of R asks for `rebuild`.
+// that rewrites columns of R asks for `rebuild`.
 #pragma once
 
 #include <cstddef>

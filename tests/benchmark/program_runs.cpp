@@ -375,7 +375,8 @@ std::string program_targets(const ProgramSettings& settings,
        {std::tuple{
             'a', 0.8,
             fmt::format("`build/gas {} --until {:g} --mode none`: at least 0.8x "
-                        "the engine's collisions per second measured in the same run",
+                        "the engine's collisions per processor second measured in the "
+                        "same run",
                         scene.name, scene.until)},
         std::tuple{
             'b', 0.5,
@@ -392,13 +393,15 @@ std::string program_targets(const ProgramSettings& settings,
     } else if (run->per_second() <= 0) {
       measured = fmt::format("not measured: collisions not known ({})", run->count_note);
     } else {
-      const double ratio = run->per_second() / engine->per_second();
-      const double to_t = static_cast<double>(engine->collisions) / engine->wall_seconds;
+      // Judged on the run's processor time, as the engine's figure is: the
+      // wall clock of a shared machine also counts the other programs' turns.
+      const double ratio = run->per_processor_second() / engine->per_second();
+      const double to_t = static_cast<double>(engine->collisions) / engine->cpu_seconds;
       measured = fmt::format(
-          "{} collisions/s, {:.2f}x the engine's {} ({:.2f}x in processor time; "
-          "{:.2f}x the engine's own run from the scene file to T; section 5)",
-          count_text(run->per_second()), ratio, count_text(engine->per_second()),
-          run->per_processor_second() / engine->per_second(), run->per_second() / to_t);
+          "{:.2f}x the engine's {} collisions/s in processor time ({:.2f}x on the wall "
+          "clock; {:.2f}x the engine's own run from the scene file to T; section 5)",
+          ratio, count_text(engine->per_second()),
+          run->per_second() / engine->per_second(), run->per_processor_second() / to_t);
       met = ratio >= least;
     }
     rows += fmt::format("| {} | {} | {} |\n", what, measured, yes_no(met));
