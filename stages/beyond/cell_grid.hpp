@@ -1,24 +1,23 @@
 // Stage 4 — first collision, by a grid of cells and a calendar of events:
 // the tuned grid, which the program runs (beyond the article).
 //
-// What this file does: the plain grid's algorithm (beyond/plain_grid.hpp:
-// cells at least 2a wide, one event a ball, cell crossings, lazy
-// invalidation, the event calendar), event for event, made faster by the
-// steps below. Below some 10^4 balls everything a collision reads is in the
-// processor's caches and its cost is the count of its instructions; beyond,
-// every event happens somewhere else on the table, what it reads comes from
-// main memory, and each such read waits as long as hundreds of arithmetic
-// steps. So the steps save instructions, memory and waits. Each is
-// described here once; lesson 11 quotes them, and the benchmark's report
-// measures what they buy together (data/reports/speed-against-error.md,
-// "What the tuning buys").
+// What this file does: the plain grid's algorithm (beyond/plain_grid.hpp: cells
+// at least 2a wide, one event a ball, cell crossings, lazy invalidation, the
+// event calendar), collision for collision, made faster by the steps below.
+// Below some 10^4 balls everything a collision reads is in the processor's
+// caches and its cost is the count of its instructions; beyond, every event
+// happens somewhere else on the table, what it reads comes from main memory,
+// and each such read waits as long as hundreds of arithmetic steps. So the
+// steps save instructions, memory and waits. Each is described here once;
+// lesson 11 quotes them, and the benchmark's report measures what they buy
+// together (data/reports/speed-against-error.md, "What the tuning buys").
 //
 // Beyond the article: the answer is the scan's, bit for bit, ties included,
 // as the plain grid's is (suite `strategies` runs both beside the scan).
 // Lesson: lessons/11-memory.md; the algorithm: lessons/10-scaling.md
 //
 // Assumptions: those of the plain grid; and no column of R was written
-// after the present moment gas.time (stage 2 refuses such a SINCE: step 5
+// after the present moment gas.time (stage 2 refuses such a SINCE: step 4
 // rests on it).
 //
 // The steps:
