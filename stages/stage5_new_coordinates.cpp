@@ -39,12 +39,14 @@ void collide_balls(Ball& p, Ball& q) {
 namespace {
 
 // Moves one ball along its flight to model time `time` and records it there.
+// [anchor: move-to]
 void move_to(Ball& ball, double time) {
   const Point centre = centre_at(ball, time);
   ball.x = centre.x;
   ball.y = centre.y;
   ball.since = time;
 }
+// [/anchor: move-to]
 
 }  // namespace
 
