@@ -524,7 +524,8 @@ const std::vector<RetiredPhrase>& retired_phrases() {
       {std::regex(R"(\bissues?\s+(#\s*)?[0-9]+)", any_case),
        "no issue numbers in the lessons: history goes in commit messages"},
       {std::regex(R"(collisions? of two balls a ball)", any_case),
-       "write 'pair collisions per ball' (ball-ball collisions over N)"},
+       "write 'pair collisions per ball' (2 x ball-ball collisions / N: each collision "
+       "counts for both its balls)"},
       {std::regex(R"(\bcollisions? a ball\b)", any_case),
        "write 'pair collisions per ball' or 'wall collisions per ball' (or 'collisions "
        "per ball, walls and pairs')"},
