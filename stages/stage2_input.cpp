@@ -477,7 +477,7 @@ SceneDescription checked(SceneText&& scene, const OverlapSearch& search) {
   return description;
 }
 
-// "FILE: larger than 1024 MiB, not a scene file".
+// "FILE: larger than 256 MiB, not a scene file".
 [[noreturn]] void fail_too_large(const std::string& file_name) {
   throw SceneError(fmt::format("{}: larger than {} MiB, not a scene file", file_name,
                                largest_scene_file >> 20));

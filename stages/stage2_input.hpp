@@ -127,7 +127,7 @@ struct Overlap {
 using OverlapSearch =
     std::function<std::optional<Overlap>(const std::vector<Point>&, double closest)>;
 
-// The article's way: every pair, N (N - 1) / 2 of them; the reader's own.
+// The plain search: every pair, N (N - 1) / 2 of them; the reader's own.
 std::optional<Overlap> first_overlap_of_all_pairs(const std::vector<Point>& centres,
                                                   double closest);
 

@@ -2,7 +2,7 @@
 // program's largest sizes (beyond/overlap_cells.*, stage 2's reader and
 // write_scene_text, program/run_outputs.*).
 //
-// - The search for overlaps through cells names the very pair the article's
+// - The search for overlaps through cells names the very pair the plain
 //   search of every pair names (the first by line, and the first ball before
 //   it), on random gases with overlaps planted, on ties at exactly the least
 //   distance, and on awkward boxes (a line, a point, a far outlier).
@@ -225,7 +225,7 @@ TEST_SUITE("large-scenes") {
   TEST_CASE(
       "10^5 balls dumped at T = 1 and continued to T = 2: the dump of the gas run "
       "straight to T = 2 byte for byte") {
-    // (Some 0.3 million collisions each way; the program as a process.)
+    // (Some 87 thousand collisions to T = 2; the program as a process.)
     Scratch scratch;
     const std::string scene = source_path("data/large-100000.scene");
     const std::string at_1 = scratch.file("at-1.scene"), on = scratch.file("on.scene"),

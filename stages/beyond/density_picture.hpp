@@ -9,10 +9,11 @@
 // border. The balls screen shows the density now; the trails screen, which
 // erases nothing, the density summed over every picture since the screen was
 // prepared (the density averaged over time).
-// Beyond the article: its screens show a handful of balls, each drawn. With
-// 10^6 balls on 100 x 30 characters every cell holds hundreds of centres and
-// the images are a wall of 'O'; the shades show the density waves of a
-// random start and the crowding near the walls.
+// Beyond the article: its screens draw each ball's image. With 10^6 balls on
+// 100 x 30 characters every cell holds hundreds of centres and the images
+// are a wall of 'O'; the shades show where the gas is denser or thinner (a
+// gas spreading into an empty part of the table, the crowding against a
+// wall where a cell is narrow enough to see it).
 // Lesson: lessons/6-output.md (the screens); lessons/7-model-control.md
 // (pictures where the scene needs them).
 //
@@ -40,7 +41,7 @@ inline constexpr std::string_view density_shades = " .:-=+*#%@";
 
 // How the balls and trails screens draw the table.
 enum class TableDrawing {
-  images,  // the article's: each ball's image, each segment of a trail
+  images,  // as the article draws: each ball's image, or its trail
   shades,  // the density of centres per character cell, in density_shades
 };
 

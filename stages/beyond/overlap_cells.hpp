@@ -9,8 +9,9 @@
 // so a cell holds a few of them: the search takes some ten comparisons a
 // ball, where the plain one takes N / 2 (at 10^5 balls, some 5 * 10^9 in all,
 // seconds; at 10^6, minutes).
-// Article: "Gas on the display", stage 2, "input". The article's handful of
-// balls needs no cells; a scene of 10^6 balls, a --dump of the program's
+// Article: "Gas on the display", stage 2, "input" (the article sets the
+// initial centres; that no two overlap is our check). A teaching scene's few
+// balls need no cells; a scene of 10^6 balls, a --dump of the program's
 // largest gas, does.
 // Lesson: lessons/2-input.md (the check of overlaps); the cells:
 // beyond/cell_layout.hpp, lessons/10-scaling.md.
