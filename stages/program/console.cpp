@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "beyond/density_picture.hpp"
 #include "beyond/display_steps.hpp"
 #include "beyond/kinetic_screen.hpp"
 #include "beyond/lyapunov_screen.hpp"
@@ -157,6 +158,7 @@ class ConsoleRun {
     if (const auto size = terminal_size(); terminal_ && size)
       display_.fit_window(size->columns, size->rows);
     if (terminal_) install_resize_flag();
+    choose_table_drawing();
   }
 
   // The article's stage 7: the keys of the tick; then, unless stopped, stages
@@ -270,7 +272,18 @@ class ConsoleRun {
   // Back to stage 3: the screen laid out afresh, and drawn whole next time.
   void prepare_again() {
     screen_ = prepare();
+    choose_table_drawing();
     display_.invalidate();
+  }
+
+  // For the balls and trails screens, the images or, when a character cell
+  // holds more than one centre, the density in shades (beyond/density_picture.hpp),
+  // counted afresh on each screen stage 3 prepares.
+  void choose_table_drawing() {
+    density_.reset();
+    if (draws_table(options_) &&
+        table_drawing_for(control_.gas, screen_) == TableDrawing::shades)
+      density_.emplace(control_.gas, screen_);
   }
 
   // Stage 3: the table's screen, or for the figures a plain character screen.
@@ -291,19 +304,21 @@ class ConsoleRun {
                                   smallest_rows + 2));
       return;
     }
-    const Tone& tone = tones[control_.tone];
+    const Tone& tone = density_ ? shades_tone : tones[control_.tone];
     if (options_.trace) {
-      fmt::print("stage 6  output: the {} screen{}\n", mode_name(options_.mode),
+      fmt::print("stage 6  output: the {} screen{}{}\n", mode_name(options_.mode),
+                 density_ ? fmt::format(" in shades ({:.4g} centres a character cell)",
+                                        density_->mean())
+                          : "",
                  at_collision ? fmt::format(", frozen at the collision T = TC = {}",
                                             control_.gas.time)
                               : "");
     }
     switch (options_.mode) {
       case ScreenMode::balls:
-        draw_balls(screen_, control_.picture, control_.gas.radius, tone);
-        break;
       case ScreenMode::trails:
-        draw_trails(screen_, control_.picture, tone);
+        draw_table(screen_, options_.mode, control_.picture, control_.gas.time,
+                   control_.gas.radius, tone, density_ ? &*density_ : nullptr);
         break;
       case ScreenMode::stats:
         draw_kinetic_figures(
@@ -331,6 +346,7 @@ class ConsoleRun {
   std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 15)
   std::optional<ObserverList> observers_;     // both on stage 7's hook
   TextScreen screen_;
+  std::optional<DensityPicture> density_;  // the table in shades, if so drawn
 };
 
 }  // namespace
