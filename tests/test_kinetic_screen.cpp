@@ -52,7 +52,9 @@ TEST_SUITE("kinetic-theory") {
       CHECK(screen.lines[5].substr(2, 2) == "H ");
       CHECK(screen.lines[7].substr(average_column, 7) == "average");
       CHECK(screen.lines[7].substr(theory_column, 6) == "theory");
-      for (const auto& [label, row] : labels) {
+      for (const auto& labelled : labels) {
+        const std::string& label = labelled.first;
+        const std::size_t row = labelled.second;
         CAPTURE(label);
         const std::string& line = screen.lines[row];
         CHECK(line.substr(2, label.size()) == label);
