@@ -140,7 +140,7 @@ TEST_SUITE("kinetic-theory") {
   }
 
   TEST_CASE(
-      "csv_header and csv_row: the article's nine columns then kinetic theory's and "
+      "csv_header and csv_row: stage 6's nine figures then kinetic theory's and "
       "numbers that read back bit for bit") {
     CHECK(gas::csv_header().rfind(
               "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"
