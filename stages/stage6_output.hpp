@@ -1,7 +1,8 @@
 // Stage 6 — output to the screen.
 //
-// What this stage does: draws what we want to see on the text screen of stage
-// 3, in one of the article's three ways — the moving balls (erase each old
+// What this stage does: shows what we want to know of the gas (the article:
+// it depends on 「われわれが何を知りたいか」) on the text screen of stage 3,
+// in one of the article's three ways — the moving balls (erase each old
 // image, draw the new one), their trajectories (a segment from each old
 // centre to the new one, nothing erased), or a character screen of figures
 // (no drawing at all) — and sends the screen to the terminal.

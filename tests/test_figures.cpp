@@ -35,7 +35,9 @@ TEST_SUITE("figures") {
         {"lesson-12/speeds.csv", 1 + 50},
         {"lesson-13/structure-contact.csv", 1 + 4},
         {"lesson-13/structure-0.5.csv", 1 + 60 + 200}};
-    for (const auto& [name, lines] : files) {
+    for (const auto& file : files) {
+      const std::string& name = file.first;
+      const std::size_t lines = file.second;
       CAPTURE(name);
       CHECK(lines_of(read_file(scratch.file(name))).size() == lines);
     }

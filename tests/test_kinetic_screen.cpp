@@ -52,7 +52,9 @@ TEST_SUITE("kinetic-theory") {
       CHECK(screen.lines[5].substr(2, 2) == "H ");
       CHECK(screen.lines[7].substr(average_column, 7) == "average");
       CHECK(screen.lines[7].substr(theory_column, 6) == "theory");
-      for (const auto& [label, row] : labels) {
+      for (const auto& labelled : labels) {
+        const std::string& label = labelled.first;
+        const std::size_t row = labelled.second;
         CAPTURE(label);
         const std::string& line = screen.lines[row];
         CHECK(line.substr(2, label.size()) == label);
@@ -138,7 +140,7 @@ TEST_SUITE("kinetic-theory") {
   }
 
   TEST_CASE(
-      "csv_header and csv_row: the article's nine columns then kinetic theory's and "
+      "csv_header and csv_row: stage 6's nine figures then kinetic theory's and "
       "numbers that read back bit for bit") {
     CHECK(gas::csv_header().rfind(
               "T,T0,wall_collisions,ball_collisions,mean_speed,energy,energy_drift,px,py,"

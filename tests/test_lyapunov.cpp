@@ -302,9 +302,11 @@ TEST_SUITE("lyapunov") {
         gas::testing::read_file(gas::testing::source_path("data/default.scene")),
         "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
-    for (const auto& [name, gas] : {std::pair{std::string("default"), seven},
-                                    std::pair{std::string("crowd"), crowd},
-                                    std::pair{std::string("dense"), dense_gas()}}) {
+    for (const auto& scene : {std::pair{std::string("default"), seven},
+                              std::pair{std::string("crowd"), crowd},
+                              std::pair{std::string("dense"), dense_gas()}}) {
+      const std::string& name = scene.first;
+      const Gas& gas = scene.second;
       CAPTURE(name);
       CHECK(twin_mismatch(gas, 2, 1e-9 * gas.radius) < 1e-2);
     }
@@ -315,10 +317,16 @@ TEST_SUITE("lyapunov") {
         gas::testing::read_file(gas::testing::source_path("data/default.scene")),
         "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
-    for (const auto& [name, gas, samples] :
-         {std::tuple{std::string("default"), seven, 2000LL},
-          std::tuple{std::string("crowd"), crowd, 1000LL},
-          std::tuple{std::string("dense"), dense_gas(), 400LL}}) {
+    struct Scene {
+      std::string name;
+      Gas gas;
+      long long samples;  // renormalisations
+    };
+    for (const Scene& scene : {Scene{"default", seven, 2000}, Scene{"crowd", crowd, 1000},
+                               Scene{"dense", dense_gas(), 400}}) {
+      const std::string& name = scene.name;
+      const Gas& gas = scene.gas;
+      const long long samples = scene.samples;
       CAPTURE(name);
       const TwinExponents e = twin_exponents(gas, samples);
       CAPTURE(e.twins.value);

@@ -276,8 +276,8 @@ double kinetic_value(const Figures&, const KineticFigures& k) {
 using M = MeasuredFigures;
 using K = KineticFigures;
 
-// The columns in order: the article's figures, then kinetic theory's (the
-// naming convention in data/README.md). A block of columns is appended at
+// The columns in order: stage 6's figures, then kinetic theory's (the naming
+// convention in data/README.md). A block of columns is appended at
 // the end.
 constexpr Column columns[] = {
     {"T", [](const Figures& f, const KineticFigures&) { return f.time; }},

@@ -65,12 +65,13 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& figures,
 void draw_histogram(TextScreen& screen, const KineticFigures& kinetic, int first_row,
                     int last_row);
 
-// The CSV header and one row of figures (--csv): the article's nine columns,
-// then kinetic theory's, each named once in a table of columns
-// (kinetic_screen.cpp; the convention in data/README.md: a bulk figure
-// plain, the whole box's `_box`, `_error` its error, `_theory` the theory of
-// the same thing, `_theory_error` the theory's own). A new block of columns
-// is a new stretch of rows at the table's end.
+// The CSV header and one row of figures (--csv): the nine figures of
+// stage 6's character screen (the article names one such figure, as an
+// example: 「例えば平均速度」), then kinetic theory's, each named once in a
+// table of columns (kinetic_screen.cpp; the convention in data/README.md:
+// a bulk figure plain, the whole box's `_box`, `_error` its error, `_theory`
+// the theory of the same thing, `_theory_error` the theory's own). A new
+// block of columns is a new stretch of rows at the table's end.
 std::string csv_header();
 std::string csv_row(const Figures& figures, const KineticFigures& kinetic);
 

@@ -46,7 +46,7 @@ set(CPACK_PACKAGE_NAME gas-on-the-display)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_CONTACT "Gas team <gas@example.invalid>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
-    "billiard-ball gas of the Kvant article Gas on the display (1989), in a terminal")
+    "billiard-ball gas of the article Gas on the display (1989), in a terminal")
 set(CPACK_PACKAGE_DESCRIPTION
     "A handful of hard discs fly across a table in the terminal, computed from one\n\
 collision to the next as the article by Bilenkin and Yutkin builds it, in\n\

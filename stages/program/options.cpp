@@ -228,7 +228,7 @@ Options parse_options(const std::vector<std::string>& arguments) {
 }
 
 std::string help_text() {
-  return R"(gas - the billiard-ball gas of "Gas on the display" (Kvant 1989), in a terminal
+  return R"(gas - the billiard-ball gas of "Gas on the display" (1989), in a terminal
 
 usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
            [--mode balls|trails|stats|none] [--events FILE] [--dump FILE] [--csv FILE]
@@ -280,10 +280,10 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
   --help, -h       show this text
   --version        show the program's version and the git commit it is built from
 
-keys (in a terminal, without Enter): S stop, R run, B reverse all velocities
-  and run on (a stopped model too), > double T0, < halve T0, 0 redraw the
-  screen, E end; beyond the article, A restarts the averages of the
-  statistics (--mode stats, --csv).
+keys (in a terminal, without Enter, in either case): S stop, R run, B reverse
+  all velocities and run on (a stopped model too), > double T0, < halve T0,
+  0 redraw the screen, E end; beyond the article, A restarts the averages of
+  the statistics (--mode stats, --csv).
 In a terminal, a resized window gets the screen prepared again at its size
 (--cols and --rows keep theirs, cut to the window); a window too small for
 the table says so until it grows.
