@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "beyond/kinetic_screen.hpp"
+#include "beyond/kinetic_csv.hpp"
 #include "beyond/lyapunov_screen.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
@@ -69,7 +69,8 @@ std::string usage_error(const std::vector<std::string>& arguments) {
 using gas::testing::Scratch;
 
 // The frames of a plain (not a terminal) run: each a status line starting
-// "T=", then a screen from a '+' border line to the next one.
+// "T=", then a screen from a '+' border line to the next one. (A status line
+// alone marks a tick of a stopped model: no frame.)
 struct Frame {
   std::string status;
   std::vector<std::string> screen;
@@ -92,7 +93,7 @@ std::vector<Frame> frames_of(const std::string& out) {
       while (starts('|')) frame.screen.push_back(lines[i++]);
       if (starts('+')) frame.screen.push_back(lines[i++]);
     }
-    frames.push_back(frame);
+    if (!frame.screen.empty()) frames.push_back(frame);
   }
   return frames;
 }
@@ -290,6 +291,14 @@ TEST_SUITE("console") {
     const std::vector<Frame> frames = frames_of(stopped.out);
     REQUIRE(frames.size() == 3);
     CHECK(frames[2].status.rfind("T=3.000000 ", 0) == 0);
+    // The ticks of the stopped model (S and the two dots) marked by one
+    // status line alone, between the first frame and the second.
+    const std::vector<std::string> lines = lines_of(stopped.out);
+    REQUIRE(lines.size() == 3 * 23 + 1);
+    CHECK(
+        lines[23] ==
+        "T=1.000000 T0=1 collisions=0 (walls 0, balls 0) screen=balls [stopped 3 ticks]");
+    CHECK(lines[24].rfind("T=2.000000 ", 0) == 0);
 
     const auto stuck =
         run_program({"data/default.scene", "--keys", ".S", "--frames", "10"});
