@@ -14,7 +14,8 @@
 //   commit, which is known when the source tree is a git checkout.
 // - The manual page (stages/program/gas.1.in) names every option of --help
 //   and no other, every key of --help's key list and no other, and every
-//   exit status --help gives.
+//   exit status --help gives; its SYNOPSIS every option of --help's usage.
+// - --help fits a terminal of 80 columns.
 // Not one of the article's stages; the reference: README.md ("Installing").
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -66,6 +67,20 @@ std::string section_of(const std::string& text, const std::string& from,
 // The manual page's source.
 std::string manual_page() {
   return read_file(source_path("stages/program/gas.1.in"));
+}
+
+// The options a text names: words that start with - or --.
+std::set<std::string> options_in(const std::string& text) {
+  return matches_of(text, "(?:^|[\\s\\[(|])(--?[a-z][a-z0-9-]*)");
+}
+
+// The options a part of the manual page names (its hyphens written \-).
+std::set<std::string> options_in_page(const std::string& text) {
+  std::set<std::string> options;
+  for (const std::string& option :
+       matches_of(text, "(?:^|[\\s\\[(|\"])((?:\\\\-){1,2}[a-z][a-z0-9-]*)"))
+    options.insert(std::regex_replace(option, std::regex("\\\\-"), "-"));
+  return options;
 }
 
 }  // namespace
@@ -180,16 +195,38 @@ TEST_SUITE("install") {
     }
   }
 
+  TEST_CASE("--help fits 80 columns and the manual page's SYNOPSIS names its usage") {
+    const std::string help = gas::help_text();
+    for (const std::string& line : gas::testing::lines_of(help)) {
+      CAPTURE(line);
+      CHECK(line.size() <= 80);
+    }
+    // --help's usage (to the first blank line) against the page's SYNOPSIS.
+    const std::size_t usage = help.find("usage:");
+    REQUIRE(usage != std::string::npos);
+    const auto in_usage =
+        options_in(help.substr(usage, help.find("\n\n", usage) - usage));
+    const auto in_synopsis =
+        options_in_page(section_of(manual_page(), ".SH SYNOPSIS", ".SH "));
+    REQUIRE(in_usage.count("--structure") == 1);  // the pattern reads the usage
+    for (const std::string& option : in_usage) {
+      CAPTURE(option);
+      CHECK_MESSAGE(in_synopsis.count(option) == 1,
+                    "add " << option << " to the SYNOPSIS of stages/program/gas.1.in");
+    }
+    for (const std::string& option : in_synopsis) {
+      CAPTURE(option);
+      CHECK(in_usage.count(option) == 1);
+    }
+  }
+
   TEST_CASE("the manual page names every option of --help and no other") {
     const std::string help = gas::help_text();
     const std::string page = manual_page();
-    // An option starts a word: the hyphen of billiard-ball is none.
-    const auto in_help = matches_of(help, "(?:^|[\\s\\[(|])(--?[a-z][a-z0-9-]*)");
-    // In the page an option's hyphens are \- (hyphens that copy as such).
-    std::set<std::string> in_page;
-    for (const std::string& option :
-         matches_of(page, "(?:^|[\\s\\[(|\"])((?:\\\\-){1,2}[a-z][a-z0-9-]*)"))
-      in_page.insert(std::regex_replace(option, std::regex("\\\\-"), "-"));
+    // An option starts a word: the hyphen of billiard-ball is none. In the
+    // page an option's hyphens are \- (hyphens that copy as such).
+    const auto in_help = options_in(help);
+    const auto in_page = options_in_page(page);
     REQUIRE(in_help.count("--frames") == 1);  // the pattern reads --help
     for (const std::string& option : in_help) {
       CAPTURE(option);
