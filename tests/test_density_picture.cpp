@@ -260,7 +260,7 @@ TEST_SUITE("pictures") {
       std::FILE* file = std::tmpfile();
       REQUIRE(file != nullptr);
       gas::Display display(file, true, true);
-      display.show(screen, "T=1.5", tone);
+      display.show(screen, "T=1.5", &tone);
       std::fflush(file);
       std::rewind(file);
       std::string out;

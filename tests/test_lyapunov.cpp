@@ -13,6 +13,7 @@
 //   the tangent-space exponent within its error (the default scene, the
 //   crowd, and a dense gas).
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -382,8 +383,16 @@ TEST_SUITE("lyapunov") {
     f.per_collision_per_ball_error = 0.25;
     const auto lines = gas::lyapunov_lines(gas, f);
     REQUIRE(lines.size() == 2);
-    CHECK(lines[0].find("0.125 +- 0.062") != std::string::npos);
-    CHECK(lines[0].find("2.5 +- 0.25") != std::string::npos);
+    CHECK(lines[0] ==
+          "Lyapunov: 0.125 +- 0.062 per unit time, 2.5 +- 0.25 per collision per ball");
+    // An error not known yet says why, for both.
+    f.exponent = {0.125, gas::not_known, "not yet"};
+    f.per_collision_per_ball_error = gas::not_known;
+    CHECK(gas::lyapunov_lines(gas, f)[0] ==
+          "Lyapunov: 0.125 +- not yet per unit time, 2.5 +- not yet per collision per "
+          "ball");
+    f.exponent = {0.125, 0.0625};
+    f.per_collision_per_ball_error = 0.25;
     CHECK(lines[1].find("double") != std::string::npos);
     for (const std::string& line : lines)
       CHECK(line.size() <= 76);  // an 80-column screen
@@ -437,7 +446,8 @@ TEST_SUITE("lyapunov") {
   }
 
   TEST_CASE(
-      "the statistics screen: the exponent's lines as far as the histogram has room") {
+      "the statistics screen: the exponent's lines last and named when there is no "
+      "room") {
     const gas::Figures f = gas::testing::some_figures();
     gas::KineticFigures k;
     k.theory.kT = 1;
@@ -450,22 +460,23 @@ TEST_SUITE("lyapunov") {
         if (line.find(text) != std::string::npos) return true;
       return false;
     };
-    // The shortest screen that shows the histogram: the histogram first, no
-    // line of the exponent's.
     auto screen_of = [&](int rows) {
       gas::TextScreen screen = gas::prepare_character_screen(80, rows);
       gas::draw_kinetic_figures(screen, f, k, more);
       return screen;
     };
+    // The exponent's lines rank last: the shortest screen that leaves nothing
+    // out shows both, with the histogram; one row less, the second is named
+    // in the line of what is left out, with the rows that show it all.
     int rows = 10;
-    while (rows < 60 && !shows(screen_of(rows), "speeds:")) ++rows;
-    const gas::TextScreen small = screen_of(rows);
-    CHECK(shows(small, "speeds:"));
-    CHECK(!shows(small, "Lyapunov one"));
-    // Two rows more: both lines, and the histogram below them.
-    const gas::TextScreen tall = screen_of(rows + 2);
-    CHECK(shows(tall, "speeds:"));
+    while (rows < 60 && shows(screen_of(rows), "more with")) ++rows;
+    const gas::TextScreen tall = screen_of(rows);
     CHECK(shows(tall, "Lyapunov one"));
     CHECK(shows(tall, "Lyapunov two"));
+    CHECK(shows(tall, "speeds:"));
+    const gas::TextScreen shorter = screen_of(rows - 1);
+    CHECK(shows(shorter, "speeds:"));
+    CHECK(!shows(shorter, "Lyapunov two"));
+    CHECK(shows(shorter, fmt::format("more with {} rows: Lyapunov", rows + 2)));
   }
 }

@@ -111,6 +111,15 @@ Figures figures_of(const Control& control) {
 // columns each on an 80-column screen.
 constexpr int histogram_bins = 36;
 
+// The line of keys under the table (Display::keys_below), for keys typed
+// live: stage 7's keys, and A where the averages are shown; a short form
+// for a narrow window.
+std::vector<std::string> key_line_forms(bool averages) {
+  return {fmt::format("keys: S stop  R run  B reverse  > T0x2  < T0/2  0 redraw  E end{}",
+                      averages ? "  A new averages" : ""),
+          fmt::format("keys: S R B > < 0 E{} (gas --help)", averages ? " A" : "")};
+}
+
 // Does the run draw the table of balls (the picture's centres), or only
 // figures (--mode stats) or nothing (--mode none)?
 bool draws_table(const Options& options) {
@@ -123,11 +132,12 @@ class ConsoleRun {
   ConsoleRun(const Options& options, Gas gas)
       : options_(options),
         terminal_(is_terminal(1) && !options.trace && options.drawn),
+        in_place_(terminal_ && understands_escapes()),
         rule_(options.pictures.value_or(picture_rule_for(gas.balls.size()))),
         keyboard_(terminal_ && is_terminal(0) && !options.keys && !options.step),
         control_(start_control_for(std::move(gas), options.strategy)),
-        display_(stdout, terminal_, terminal_ && std::getenv("NO_COLOR") == nullptr),
-        grid_(grid_size(options, terminal_)),
+        display_(stdout, in_place_, in_place_ && std::getenv("NO_COLOR") == nullptr),
+        grid_(grid_size(options, in_place_)),
         frame_limit_(frame_limit(options, terminal_)),
         outputs_(options, display_),
         keeps_{draws_table(options), options.events_path.has_value() || options.bell},
@@ -155,10 +165,12 @@ class ConsoleRun {
     }
     // Drawn in place: the frame fits the window, and fits it again when it
     // changes size (resize()).
-    if (const auto size = terminal_size(); terminal_ && size)
+    if (const auto size = terminal_size(); in_place_ && size)
       display_.fit_window(size->columns, size->rows);
-    if (terminal_) install_resize_flag();
+    if (in_place_) install_resize_flag();
     choose_table_drawing();
+    // Keys typed live: the line under the table says which.
+    if (keyboard_) display_.keys_below(key_line_forms(options.mode == ScreenMode::stats));
   }
 
   // The article's stage 7: the keys of the tick; then, unless stopped, stages
@@ -177,17 +189,23 @@ class ConsoleRun {
       if (interrupted() || outputs_.failure()) break;
       if (frame_limit_ && frames_done >= *frame_limit_) break;
       if (options_.until && control_.gas.time >= *options_.until) break;
-      if (terminal_ && take_resize()) resize();  // stage 3 again, at the new size
+      if (in_place_ && take_resize()) resize();  // stage 3 again, at the new size
 
       // Stage 7: the keys of this tick; E ends the run.
       const std::string pressed = keys.take(control_.stopped);
       if (!press_all(pressed)) break;
       if (control_.stopped) {
-        // No step; on the keyboard, the status line shows what a key did.
-        if (keys.from_keyboard() && !pressed.empty()) show(figures_of(control_));
+        // No step. On a terminal the status line shows what a key did;
+        // printed whole, the ticks are counted, to be marked by one line.
+        if (keys.from_keyboard() || in_place_) {
+          if (!pressed.empty()) show(figures_of(control_));
+        } else {
+          ++stopped_ticks_;
+        }
         if (keys.wait_while_stopped()) continue;
         break;  // nothing could start the model again
       }
+      mark_stopped_ticks();
 
       // Stages 4 and 5 (and stage 7 going back to stage 4 at a collision), up
       // to the next picture: the first collision, or T + T0 (the rule).
@@ -213,6 +231,7 @@ class ConsoleRun {
       if (!keys.wait_after_step(step.length / control_.gas.display_step)) break;
     }
     // However the run ends: the terminal put back, the files closed whole.
+    mark_stopped_ticks();
     display_.finish();
     outputs_.finish(control_.gas, statistics_ ? &*statistics_ : nullptr);
     return ending();
@@ -236,6 +255,20 @@ class ConsoleRun {
                    ? std::string()
                    : fmt::format("; written whole: {}", fmt::join(files, ", ")));
     return 128 + interrupting_signal();
+  }
+
+  // Printed whole, a stretch of ticks in which the model stood stopped
+  // (keys of --keys or --step lines) is marked by one line: the status line
+  // of the gas as it stands, and how many ticks.
+  void mark_stopped_ticks() {
+    if (stopped_ticks_ == 0) return;
+    if (options_.drawn) {
+      display_.status_only(
+          fmt::format("{} [stopped {} tick{}]",
+                      status_line(figures_of(control_), options_.mode, false),
+                      stopped_ticks_, stopped_ticks_ == 1 ? "" : "s"));
+    }
+    stopped_ticks_ = 0;
   }
 
   // Where stage 2 read the scene: its file, or the default scene built in.
@@ -299,9 +332,9 @@ class ConsoleRun {
   // article's picture freezes there while stage 4 computes the next one.
   void show(const Figures& figures, const KineticFigures* kinetic = nullptr,
             bool at_collision = false) {
-    if (grid_.too_small) {  // until the window grows: one line, no frame
-      display_.notice(fmt::format("window too small: at least {} x {}", smallest_columns,
-                                  smallest_rows + 2));
+    if (grid_.too_small) {  // until the window grows: a notice, no frame
+      display_.notice({"window", "too", "small:", "at", "least",
+                       fmt::format("{} x {}", smallest_columns, smallest_rows + 2)});
       return;
     }
     const Tone& tone = density_ ? shades_tone : tones[control_.tone];
@@ -328,12 +361,15 @@ class ConsoleRun {
             lyapunov_lines(control_.gas, lyapunov_->measured(control_.gas)));
         break;
     }
-    display_.show(screen_, status_line(figures, options_.mode, control_.stopped), tone);
+    // Colour for a table's glyphs; none on a screen of figures.
+    display_.show(screen_, status_line(figures, options_.mode, control_.stopped),
+                  options_.mode == ScreenMode::stats ? nullptr : &tone);
     if (options_.trace) trace_decision(control_, stdout);
   }
 
   const Options& options_;
-  bool terminal_;     // frames drawn in place on a terminal, not printed whole
+  bool terminal_;     // frames shown on a terminal, in real time and with no frame limit
+  bool in_place_;     // ... drawn in place with escapes (not a dumb terminal)
   PictureRule rule_;  // pictures at every collision, or at display steps only
   bool keyboard_;     // keys typed live on the keyboard
   Control control_;
@@ -345,6 +381,7 @@ class ConsoleRun {
   std::optional<GasStatistics> statistics_;   // for --mode stats, --csv, --structure
   std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 15)
   std::optional<ObserverList> observers_;     // both on stage 7's hook
+  long long stopped_ticks_ = 0;  // printed whole: ticks stopped, not yet marked
   TextScreen screen_;
   std::optional<DensityPicture> density_;  // the table in shades, if so drawn
 };

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "beyond/kinetic_screen.hpp"
+#include "beyond/kinetic_csv.hpp"
 #include "program/options.hpp"
 #include "stage1_data.hpp"
 #include "stage6_output.hpp"

@@ -15,6 +15,12 @@ namespace gas {
 
 bool is_terminal(int file_descriptor);
 
+// Does the terminal understand ANSI escapes (cursor moves, colours)? Not
+// when the environment's TERM is unset, empty or "dumb" (a terminal that
+// can only print lines, such as Emacs' shell): frames are then printed
+// whole, with no escape byte.
+bool understands_escapes();
+
 // The terminal's size in characters, if standard output is a terminal.
 struct TerminalSize {
   int columns = 80;
