@@ -98,6 +98,12 @@ TEST_SUITE("kinetic-theory") {
     CHECK(screen.lines[9].substr(measured_column, 25) == "2.0625 +- 0.013          ");
     CHECK(screen.lines[9].substr(theory_column, 16) == "2.0638 +- 0.0021");
     CHECK(screen.lines[9].substr(source_column, 15) == "Henderson 2.062");
+    // Henderson's Z not known yet (no interior density before the warm-up):
+    // "-", like every figure not known, never "nan".
+    gas::KineticFigures unknown_henderson = big_kinetic;
+    unknown_henderson.bulk_z_henderson = gas::not_known;
+    gas::draw_kinetic_figures(screen, big, unknown_henderson);
+    CHECK(screen.lines[9].substr(source_column, 12) == "Henderson - ");
     // A handful of balls: the bulk's theory in words, no number.
     gas::draw_kinetic_figures(screen, big, small_kinetic);
     CHECK(screen.lines[9].substr(theory_column, 16) == "needs many balls");

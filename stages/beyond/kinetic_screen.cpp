@@ -234,7 +234,7 @@ std::vector<FigureLine> table_lines(const KineticFigures& k) {
                  bulk(k.pressure_theory), k.many_balls ? "bulk, reference" : ""),
        5, "P"},
       {table_row("Z bulk", shown(m.bulk_z), bulk(k.bulk_z_theory),
-                 k.many_balls ? fmt::format("Henderson {:.4g}", k.bulk_z_henderson) : ""),
+                 k.many_balls ? "Henderson " + shown(k.bulk_z_henderson) : ""),
        6, "Z"},
       // Z - Z_ref, sample by sample (its error is the smaller): 0 if the
       // reference holds.
