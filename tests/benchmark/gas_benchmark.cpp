@@ -21,10 +21,13 @@
 //      (peer_runs.hpp); "not run" for the peer without --peer.
 //   7. What the tuning buys: build/gas with the plain grid beside the tuned
 //      one, in the rounds of section 6 (section_tuning.hpp).
+//   8. Checkpoints: a --dump of 10^3 to 10^6 balls written and read back,
+//      timed as processes (dump_runs.hpp).
 //
 // Each section is its own unit (section_throughput, section_accuracy,
-// time_stepped, program_runs, peer_runs, section_tuning); this file runs them
-// in turn and writes the report's head: the machine, and the targets.
+// time_stepped, program_runs, peer_runs, section_tuning, dump_runs); this
+// file runs them in turn and writes the report's head: the machine, and the
+// targets.
 //
 // and two pictures beside it, drawn by gnuplot if it is installed
 // (plots.hpp): collisions per second against N, and the distance from the
@@ -53,6 +56,7 @@
 #include <vector>
 
 #include "benchmark_build_info.hpp"
+#include "dump_runs.hpp"
 #include "peer_runs.hpp"
 #include "program_runs.hpp"
 #include "report_common.hpp"
@@ -256,6 +260,8 @@ int run(const Settings& settings) {
   const PeerFigures peer_runs = measure_peer(peer_settings);
   write_peer_csv(settings.out / "peer.csv", peer_runs);
   fs::remove_all(peer_settings.scratch);
+  const std::string dumps =
+      dump_report(settings.smoke, settings.out, sizes.program_time_limit);
 
   progress("pictures: gnuplot");
   const std::string throughput_picture = picture_markdown(
@@ -281,6 +287,7 @@ int run(const Settings& settings) {
   report += program_section(program_settings, program_runs);
   report += peer_section(peer_settings, peer_runs);
   report += tuning_section(peer_settings, peer_runs);
+  report += dumps;
   std::ofstream file(settings.out / "speed-against-error.md");
   if (!file)
     throw std::runtime_error(fmt::format("{}: cannot write", settings.out.string()));
