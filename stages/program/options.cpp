@@ -176,6 +176,7 @@ constexpr KnownOption known_options[] = {
     {"--dump", read_text<&Options::dump_path>},
     {"--csv", read_text<&Options::csv_path>},
     {"--structure", read_text<&Options::structure_path>},
+    {"--vacf", read_text<&Options::vacf_path>},
     {"--cols", read_screen_size<&Options::columns, smallest_columns>},
     // The screen's rows and two more: the status line, and the cursor below.
     {"--rows", read_screen_size<&Options::rows, smallest_rows + 2>},
@@ -232,7 +233,7 @@ std::string help_text() {
 
 usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
            [--mode balls|trails|stats|none] [--events FILE] [--dump FILE] [--csv FILE]
-           [--structure FILE]
+           [--structure FILE] [--vacf FILE]
            [--cols N] [--rows N] [--step] [--trace] [--bell]
            [--strategy scan|table|grid] [--pictures collisions|steps]
        gas --help | --version
@@ -258,6 +259,11 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
                    balls of the interior, and the density of centres near the
                    walls x = 0, A1; a line per bin 0.05a wide:
                    curve,from,to,value,error (curve: pair or wall)
+  --vacf FILE      at exit, write the velocity autocorrelation function of
+                   the balls far from the walls to FILE as CSV, a line per
+                   lag t: t,vacf,vacf_error,vacf_enskog,vacf_tail,
+                   diffusion,diffusion_error,diffusion_enskog (Enskog's
+                   exponential and the mode-coupling tail beside it)
   --cols N         screen width in characters (default: the terminal's, else 80)
   --rows N         screen height in characters (default: the terminal's, else 24)
   --step           wait for Enter after every display step (a line may hold keys)
