@@ -711,7 +711,8 @@ TEST_SUITE("lessons") {
           "lessons/3-screen-preparation.md", "lessons/4-first-collision.md",
           "lessons/5-new-coordinates.md", "lessons/6-output.md",
           "lessons/7-model-control.md", "lessons/8-errata.md",
-          "lessons/9-time-reversal.md", "lessons/10-scaling.md"}) {
+          "lessons/9-time-reversal.md", "lessons/10-scaling.md",
+          "lessons/16-long-time-tail.md"}) {
       if (named.count(lesson) == 0)
         problems.push_back(fmt::format("lessons/README.md does not name {}", lesson));
     }

@@ -13,8 +13,8 @@
 // (r(t) - r(0))> / 2. Each origin gives one sample of rho and of D at each
 // lag; their mean over the origins is the answer, and their spread, by the
 // blocking analysis of the statistics screen (beyond/blocking.hpp), its
-// error. A collision costs one comparison (a wall bounce two); an origin and
-// each of its readings walk its counted balls once.
+// error. A collision costs one comparison (a wall bounce two); an origin
+// walks every ball once, and each of its readings its counted balls.
 // Article: none; the article averages nothing. Everything here is beyond it.
 // Lesson: lessons/16-long-time-tail.md
 //
