@@ -2,8 +2,8 @@
 // article), and the diffusion coefficient that is its running integral.
 //
 // What this file does: measures
-//   rho(t) = <v(0) . v(t)> / <v(0)^2>   and   D(t) = (1/2) integral from 0 to t of <v(0)
-//   . v(s)> ds
+//   rho(t) = <v(0) . v(t)> / <v(0)^2>,
+//   D(t) = (1/2) integral from 0 to t of <v(0) . v(s)> ds
 // for the balls of the bulk, through stage 7's hook. At moments T_0, T_0 + dT,
 // T_0 + 2 dT, ... (the time origins) it notes the velocity and centre of
 // every ball far from the walls (the counted balls); at each lag t of a fixed

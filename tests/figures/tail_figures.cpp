@@ -314,7 +314,7 @@ void tail(const fs::path& out, const fs::path& work, bool smoke, bool keep) {
   const double last = c.s.back();
   Series measured{"measured (4 gases of 10^5 balls)", {}, false, {}, ""};
   Series t_rho{"measured", {}, false, {}, ""};
-  Series diffusion{"measured D(t) / D_E", {}, false, {}, ""};
+  Series diffusion{"measured", {}, false, {}, ""};
   for (std::size_t k = 1; k < c.s.size(); ++k) {
     measured.points.emplace_back(c.s[k], c.rho[k]);
     measured.errors.push_back(std::isfinite(c.rho_error[k]) ? c.rho_error[k] : 0);
@@ -352,18 +352,17 @@ void tail(const fs::path& out, const fs::path& work, bool smoke, bool keep) {
   Series enskog_t{
       "Enskog: t exp(-t / tau_E), same scale", {}, true, {}, "lines linewidth 2"};
   Series mode_t{"mode coupling (1)", {}, true, {}, "lines linewidth 2"};
-  Series enskog_d{"Enskog: 1 - exp(-t / tau_E)", {}, true, {}, "lines linewidth 2"};
+  Series enskog_d{"Enskog", {}, true, {}, "lines linewidth 2"};
   // The tail's integral: D grows by kT alpha tau_E ln t = D_E alpha ln t, a
   // line of slope alpha against ln t, drawn through the measured D at 10 tau_E.
   std::size_t ten = 1;
   for (std::size_t k = 1; k < c.s.size(); ++k)
     if (std::abs(std::log(c.s[k] / 10)) < std::abs(std::log(c.s[ten] / 10))) ten = k;
-  Series mode_d{
-      fmt::format("slope alpha = {:.3f} (the tail's integral), through 10 tau_E", alpha),
-      {},
-      true,
-      {},
-      "lines linewidth 2"};
+  Series mode_d{fmt::format("slope alpha = {:.3f}, through 10 tau_E", alpha),
+                {},
+                true,
+                {},
+                "lines linewidth 2"};
   for (int i = 0; i <= 200; ++i) {
     const double s = 0.01 * std::pow(last / 0.01, i / 200.0);
     enskog.points.emplace_back(s, std::exp(-s));
@@ -389,7 +388,7 @@ void tail(const fs::path& out, const fs::path& work, bool smoke, bool keep) {
              false,
              {t_rho, enskog_t, mode_t, grown},
              "top right",
-             "set yrange [0:2]"};
+             "set yrange [0:2.8]"};
   draw({out / "t-rho.svg", "", {flat}, 800, 560}, smoke);
   Panel grows{"D(t) = (1/2) integral of <v(0).v(s)> to t, over Enskog's D_E",
               "t / tau_E (log scale: ln t)",
@@ -397,7 +396,7 @@ void tail(const fs::path& out, const fs::path& work, bool smoke, bool keep) {
               true,
               false,
               {diffusion, enskog_d, mode_d},
-              "top left",
+              "bottom right",
               ""};
   draw({out / "diffusion.svg", "", {grows}, 800, 560}, smoke);
 }
