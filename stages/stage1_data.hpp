@@ -10,18 +10,20 @@
 // Assumptions: all balls are discs of one radius and one mass (the mass never
 // appears: it cancels from every formula the article uses); collisions are
 // perfectly elastic; the table is the rectangle 0 <= x <= A1, 0 <= y <= A2
-// whose four sides are the walls. Units are the scene file's: lengths in
-// "pixels" of the article's screen, time in model time units.
+// whose four sides are the walls. Units are the scene file's own, lengths and
+// time alike (the default scene's 256 x 192 borrows the numbers of the
+// article's example screen: lessons/README.md, glossary).
 #pragma once
 
 #include <vector>
 
 namespace gas {
 
-// One row of the article's R(4, N), plus the moment it was written.
+// A ball's column of the article's R(4, N) — R(1..4, i) for ball i — plus
+// the moment it was written.
 //
 // The article keeps x, y, vx, vy of every ball at the common time T and moves
-// every ball at every step. We write a ball's row only when that ball
+// every ball at every step. We write a ball's column of R only when that ball
 // collides, and remember when: its centre at any later moment is
 // (x + vx * (time - since), y + vy * (time - since)) until its next collision.
 // A free flight is then one multiplication, not a sum of many small steps,

@@ -492,6 +492,102 @@ std::set<std::string> relative_links(const std::string& text,
   return links;
 }
 
+// ------------------------------------------------ words, asides, lengths
+
+// The most lines a numbered lesson may have: one lesson, one sitting of
+// about 45 minutes (lessons/README.md, "How to use them").
+constexpr std::size_t most_lesson_lines = 500;
+
+// Is `lesson` ("lessons/....md") a numbered lesson, such as
+// lessons/4-first-collision.md (not the README, not an exercise)?
+bool numbered_lesson(const std::string& lesson) {
+  static const std::regex numbered(R"(^lessons/[0-9]+-[^/]+\.md$)");
+  return std::regex_match(lesson, numbered);
+}
+
+// A phrase no lesson may use, and what to write instead.
+struct RetiredPhrase {
+  std::regex pattern;
+  const char* instead;
+};
+
+const std::vector<RetiredPhrase>& retired_phrases() {
+  using flags = std::regex_constants::syntax_option_type;
+  const flags any_case = std::regex::ECMAScript | std::regex::icase;
+  static const std::vector<RetiredPhrase> phrases = {
+      {std::regex(R"(earlier versions?)", any_case),
+       "the lessons say nothing of their own past versions: history goes in commit "
+       "messages"},
+      {std::regex(R"(before issue)", any_case),
+       "the lessons say nothing of their own past versions: history goes in commit "
+       "messages"},
+      {std::regex(R"(\bissues?\s+(#\s*)?[0-9]+)", any_case),
+       "no issue numbers in the lessons: history goes in commit messages"},
+      {std::regex(R"(collisions? of two balls a ball)", any_case),
+       "write 'pair collisions per ball' (2 x ball-ball collisions / N: each collision "
+       "counts for both its balls)"},
+      {std::regex(R"(\bcollisions? a ball\b)", any_case),
+       "write 'pair collisions per ball' or 'wall collisions per ball' (or 'collisions "
+       "per ball, walls and pairs')"},
+      // Case matters: R is the article's array.
+      {std::regex(R"(\brows? of R\b)"),
+       "ball i is column i of R(4, N): write 'column of R'"},
+      {std::regex(R"(ball's row\b)"),
+       "ball i is column i of R(4, N): write 'column of R'"},
+  };
+  return phrases;
+}
+
+// The problems of one lesson's words, asides and length, each "LINE: ..."
+// (a length problem has no line). Checks, outside fenced blocks for the
+// asides and everywhere for the phrases: no retired phrase; every block
+// quote is an aside, opening with '> **Aside: TITLE.**' (lessons/README.md);
+// no fenced block inside a block quote (nothing there could be checked); a
+// numbered lesson at most most_lesson_lines long.
+std::vector<std::string> lesson_form_problems(const std::string& lesson,
+                                              const std::vector<std::string>& lines) {
+  std::vector<std::string> problems;
+  static const std::regex aside_opening(R"(^> \*\*Aside: [^*]+\.\*\* \S.*$)");
+  bool in_fence = false;
+  bool in_quote = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    const int number = static_cast<int>(i) + 1;
+    for (const RetiredPhrase& phrase : retired_phrases()) {
+      std::smatch match;
+      if (std::regex_search(line, match, phrase.pattern)) {
+        problems.push_back(
+            fmt::format("{}: '{}': {}", number, match.str(0), phrase.instead));
+      }
+    }
+    if (line.rfind("```", 0) == 0) {
+      in_fence = !in_fence;
+      in_quote = false;
+      continue;
+    }
+    if (in_fence) continue;
+    const bool quoted = line.rfind(">", 0) == 0;
+    if (quoted && !in_quote && !std::regex_match(line, aside_opening)) {
+      problems.push_back(fmt::format(
+          "{}: a block quote that is not an aside: open it with '> **Aside: TITLE.** "
+          "text' (lessons/README.md)",
+          number));
+    }
+    if (quoted && line.find("```") != std::string::npos) {
+      problems.push_back(fmt::format(
+          "{}: a fenced block inside a block quote: nothing checks it there; put "
+          "code and output outside the aside",
+          number));
+    }
+    in_quote = quoted;
+  }
+  if (numbered_lesson(lesson) && lines.size() > most_lesson_lines) {
+    problems.push_back(fmt::format("{} lines, more than {}: one lesson, one sitting",
+                                   lines.size(), most_lesson_lines));
+  }
+  return problems;
+}
+
 std::string joined(const std::vector<std::string>& problems) {
   std::string out;
   for (const std::string& problem : problems) out += "\n  " + problem;
@@ -691,6 +787,75 @@ TEST_SUITE("lessons") {
     CHECK_MESSAGE(problems.empty(), "quoted blocks:" << joined(problems));
   }
 
+  TEST_CASE("lessons: the form rule finds retired words, stray quotes and long lessons") {
+    // This test proves that the next one can fail: a made-up lesson that
+    // breaks each rule once, and one that keeps them all.
+    const std::vector<std::string> good = {
+        "# 4. A lesson",                                           // 1
+        "Pair collisions per ball, and a ball's column of R.",     // 2
+        "",                                                        // 3
+        "> **Aside: the last-bit trap.** A pair that approaches",  // 4
+        "> at 1e-16 of its speed.",                                // 5
+        "",                                                        // 6
+        "```text",                                                 // 7
+        "> a quote inside a fence is not a block quote",           // 8
+        "```",                                                     // 9
+    };
+    CHECK(lesson_form_problems("lessons/4-a-lesson.md", good).empty());
+
+    const std::vector<std::string> bad = {
+        "Earlier versions of this lesson said so.",             // 1
+        "The table, before issue 21, was slower (issue #12).",  // 2
+        "after 10 collisions of two balls a ball",              // 3
+        "12 collision a ball per unit time",                    // 4
+        "a row of R is a Ball; the ball's row is written",      // 5
+        "> A note that is no aside.",                           // 6
+        "",                                                     // 7
+        "> **Aside: code.** Here:",                             // 8
+        "> ```cpp",                                             // 9
+    };
+    const std::vector<std::string> problems = lesson_form_problems("lessons/4-x.md", bad);
+    const auto says = [&](const std::string& what) {
+      return std::any_of(problems.begin(), problems.end(),
+                         [&](const std::string& p) { return p.rfind(what, 0) == 0; });
+    };
+    CHECK(says("1: 'Earlier versions'"));
+    CHECK(says("2: 'before issue'"));
+    CHECK(says("2: 'issue 21'"));
+    CHECK(says("3: 'collisions of two balls a ball'"));
+    CHECK(says("4: 'collision a ball'"));
+    CHECK(says("5: 'row of R'"));
+    CHECK(says("5: 'ball's row'"));
+    CHECK(says("6: a block quote that is not an aside"));
+    CHECK(says("9: a fenced block inside a block quote"));
+    CHECK_FALSE(says("8:"));  // a well-formed aside
+
+    // Length: a numbered lesson of 501 lines is too long, 500 is not; the
+    // README and the exercises are not numbered lessons.
+    const std::vector<std::string> long_lesson(most_lesson_lines + 1, "text");
+    const std::vector<std::string> full_lesson(most_lesson_lines, "text");
+    CHECK(lesson_form_problems("lessons/11-memory.md", long_lesson).size() == 1);
+    CHECK(lesson_form_problems("lessons/11-memory.md", full_lesson).empty());
+    CHECK(lesson_form_problems("lessons/README.md", long_lesson).empty());
+    CHECK(lesson_form_problems("lessons/exercises/01-x/instructions.md", long_lesson)
+              .empty());
+  }
+
+  TEST_CASE(
+      "lessons: no lesson uses a retired phrase, every block quote is an aside, and no "
+      "lesson is over 500 lines") {
+    // Applies to every lesson, those still being split included: a lesson
+    // listed here is one to shorten or reword, not an exception.
+    std::vector<std::string> problems;
+    for (const std::string& lesson : lesson_files()) {
+      for (const std::string& problem :
+           lesson_form_problems(lesson, lines_of(read_file(source_path(lesson))))) {
+        problems.push_back(fmt::format("{}:{}", lesson, problem));
+      }
+    }
+    CHECK_MESSAGE(problems.empty(), "the lessons' form:" << joined(problems));
+  }
+
   TEST_CASE("lessons: the lessons named by lessons/README.md and by the stages exist") {
     std::vector<std::string> problems;
     const auto exists = [](const std::string& relative) {
@@ -712,6 +877,8 @@ TEST_SUITE("lessons") {
           "lessons/5-new-coordinates.md", "lessons/6-output.md",
           "lessons/7-model-control.md", "lessons/8-errata.md",
           "lessons/9-time-reversal.md", "lessons/10-scaling.md",
+          "lessons/12-statistics-screen.md", "lessons/13-box-and-bulk.md",
+          "lessons/14-error-bars.md", "lessons/15-chaos.md",
           "lessons/16-long-time-tail.md"}) {
       if (named.count(lesson) == 0)
         problems.push_back(fmt::format("lessons/README.md does not name {}", lesson));

@@ -1,6 +1,6 @@
 // Tests for the tangent dynamics and the Lyapunov exponent
 // (stages/beyond/tangent_dynamics.*, lyapunov.*, lyapunov_screen.*;
-// lessons/12-chaos.md).
+// lessons/15-chaos.md).
 //
 // Two independent checks of the linearised collision map, both through the
 // project's own stages 4 and 5, never through a second copy of the formulas:
@@ -13,6 +13,7 @@
 //   the tangent-space exponent within its error (the default scene, the
 //   crowd, and a dense gas).
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -255,7 +256,7 @@ TEST_SUITE("lyapunov") {
   // are at most ~10 here, its curvature like them: ~1e-11) and by the
   // rounding of states of size ~40 (ulp 7e-15) over 2h: ~1e-8. 1e-6 is far
   // above both and far below what a wrong term gives (order 1: the breaks
-  // tried in lesson 12 missed by 0.1 to 10).
+  // tried in lesson 15 missed by 0.1 to 10).
   constexpr double fd_tolerance = 1e-6;
   constexpr double fd_step = 1e-6;
 
@@ -302,9 +303,11 @@ TEST_SUITE("lyapunov") {
         gas::testing::read_file(gas::testing::source_path("data/default.scene")),
         "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
-    for (const auto& [name, gas] : {std::pair{std::string("default"), seven},
-                                    std::pair{std::string("crowd"), crowd},
-                                    std::pair{std::string("dense"), dense_gas()}}) {
+    for (const auto& scene : {std::pair{std::string("default"), seven},
+                              std::pair{std::string("crowd"), crowd},
+                              std::pair{std::string("dense"), dense_gas()}}) {
+      const std::string& name = scene.first;
+      const Gas& gas = scene.second;
       CAPTURE(name);
       CHECK(twin_mismatch(gas, 2, 1e-9 * gas.radius) < 1e-2);
     }
@@ -315,10 +318,16 @@ TEST_SUITE("lyapunov") {
         gas::testing::read_file(gas::testing::source_path("data/default.scene")),
         "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
-    for (const auto& [name, gas, samples] :
-         {std::tuple{std::string("default"), seven, 2000LL},
-          std::tuple{std::string("crowd"), crowd, 1000LL},
-          std::tuple{std::string("dense"), dense_gas(), 400LL}}) {
+    struct Scene {
+      std::string name;
+      Gas gas;
+      long long samples;  // renormalisations
+    };
+    for (const Scene& scene : {Scene{"default", seven, 2000}, Scene{"crowd", crowd, 1000},
+                               Scene{"dense", dense_gas(), 400}}) {
+      const std::string& name = scene.name;
+      const Gas& gas = scene.gas;
+      const long long samples = scene.samples;
       CAPTURE(name);
       const TwinExponents e = twin_exponents(gas, samples);
       CAPTURE(e.twins.value);
@@ -332,7 +341,7 @@ TEST_SUITE("lyapunov") {
       // scene and the crowd); their windows differ (the twins start 20
       // samples later, from their own random direction), so agreement
       // within one error of the tangent value is the fair demand. Both turn
-      // terms with the wrong sign (lesson 12) moved it by 2.0 of its errors
+      // terms with the wrong sign (lesson 15) moved it by 2.0 of its errors
       // in the default scene (few collisions of two balls), 23 in the crowd
       // and 49 in the dense gas.
       CHECK(std::fabs(e.twins.value - e.tangent.value) < e.tangent.error);
@@ -374,8 +383,16 @@ TEST_SUITE("lyapunov") {
     f.per_collision_per_ball_error = 0.25;
     const auto lines = gas::lyapunov_lines(gas, f);
     REQUIRE(lines.size() == 2);
-    CHECK(lines[0].find("0.125 +- 0.062") != std::string::npos);
-    CHECK(lines[0].find("2.5 +- 0.25") != std::string::npos);
+    CHECK(lines[0] ==
+          "Lyapunov: 0.125 +- 0.062 per unit time, 2.5 +- 0.25 per collision per ball");
+    // An error not known yet says why, for both.
+    f.exponent = {0.125, gas::not_known, "not yet"};
+    f.per_collision_per_ball_error = gas::not_known;
+    CHECK(gas::lyapunov_lines(gas, f)[0] ==
+          "Lyapunov: 0.125 +- not yet per unit time, 2.5 +- not yet per collision per "
+          "ball");
+    f.exponent = {0.125, 0.0625};
+    f.per_collision_per_ball_error = 0.25;
     CHECK(lines[1].find("double") != std::string::npos);
     for (const std::string& line : lines)
       CHECK(line.size() <= 76);  // an 80-column screen
@@ -421,7 +438,7 @@ TEST_SUITE("lyapunov") {
     CHECK(names.back() == "lyapunov_error");
     const double lambda = std::stod(last[last.size() - 2]);
     const double error = std::stod(last.back());
-    // The crowd's exponent, 0.134 +- 0.001 over T = 50000 (lesson 12): at
+    // The crowd's exponent, 0.134 +- 0.001 over T = 50000 (lesson 15): at
     // T = 5000 within a few of its own errors of that, and known to 5 %.
     CHECK(std::fabs(lambda - 0.134) < 5 * error + 0.002);
     CHECK(error > 0);
@@ -429,7 +446,8 @@ TEST_SUITE("lyapunov") {
   }
 
   TEST_CASE(
-      "the statistics screen: the exponent's lines as far as the histogram has room") {
+      "the statistics screen: the exponent's lines last and named when there is no "
+      "room") {
     const gas::Figures f = gas::testing::some_figures();
     gas::KineticFigures k;
     k.theory.kT = 1;
@@ -442,22 +460,23 @@ TEST_SUITE("lyapunov") {
         if (line.find(text) != std::string::npos) return true;
       return false;
     };
-    // The shortest screen that shows the histogram: the histogram first, no
-    // line of the exponent's.
     auto screen_of = [&](int rows) {
       gas::TextScreen screen = gas::prepare_character_screen(80, rows);
       gas::draw_kinetic_figures(screen, f, k, more);
       return screen;
     };
+    // The exponent's lines rank last: the shortest screen that leaves nothing
+    // out shows both, with the histogram; one row less, the second is named
+    // in the line of what is left out, with the rows that show it all.
     int rows = 10;
-    while (rows < 60 && !shows(screen_of(rows), "speeds:")) ++rows;
-    const gas::TextScreen small = screen_of(rows);
-    CHECK(shows(small, "speeds:"));
-    CHECK(!shows(small, "Lyapunov one"));
-    // Two rows more: both lines, and the histogram below them.
-    const gas::TextScreen tall = screen_of(rows + 2);
-    CHECK(shows(tall, "speeds:"));
+    while (rows < 60 && shows(screen_of(rows), "more with")) ++rows;
+    const gas::TextScreen tall = screen_of(rows);
     CHECK(shows(tall, "Lyapunov one"));
     CHECK(shows(tall, "Lyapunov two"));
+    CHECK(shows(tall, "speeds:"));
+    const gas::TextScreen shorter = screen_of(rows - 1);
+    CHECK(shows(shorter, "speeds:"));
+    CHECK(!shows(shorter, "Lyapunov two"));
+    CHECK(shows(shorter, fmt::format("more with {} rows: Lyapunov", rows + 2)));
   }
 }

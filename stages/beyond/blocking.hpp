@@ -12,7 +12,7 @@
 // O(log n) memory. From the levels it gives the standard error of the mean by
 // the rule below, and says "not known" (NaN) until the rule can be applied.
 // Article: none; the article averages nothing. Everything here is beyond it.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/14-error-bars.md
 //
 // Why blocks: for a correlated series the naive error sqrt(s^2 / n) is wrong
 // by the square root of the statistical inefficiency g = 1 + 2 sum of the

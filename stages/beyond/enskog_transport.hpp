@@ -9,7 +9,7 @@
 // the mode-coupling tail rho(t) = 1 / (8 pi n (D_E + nu_E) t). Every formula
 // is derived in enskog_transport.cpp (and in the lesson), and checked there
 // against the three-dimensional results it generalises.
-// Article: none; the article ("Gas on the display", Kvant 1989) has no
+// Article: none; the article ("Gas on the display", 1989) has no
 // transport theory. Everything here is beyond it.
 // Lesson: lessons/16-long-time-tail.md
 //

@@ -1,5 +1,5 @@
 // The measured side of the statistics screen. See beyond/gas_statistics.hpp
-// and lessons/11-kinetic-theory.md.
+// and lessons/13-box-and-bulk.md.
 #include "beyond/gas_statistics.hpp"
 
 #include <algorithm>
@@ -76,7 +76,7 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   // interior_margin_radii a along each of the two walls (its layers by the
   // wall are left out with the margin). The push on a wall's middle follows
   // the pressure of the gas just in front of it, slow sound waves included;
-  // the interior as a whole averages those waves away (lesson 11).
+  // the interior as a whole averages those waves away (lesson 14).
   const double strip = std::min(margin, (interior_.x_max - interior_.x_min) / 4);
   beside_left_ = {interior_.x_min, interior_.x_min + strip, interior_.y_min,
                   interior_.y_max};
@@ -311,7 +311,7 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
   // inside. (The interior's kT is the box's on average, but it wanders
   // slowly, heat crossing the table, and its density with it: measured at
   // its own kT the interior's Z follows its own eta, and the difference from
-  // the theory at eta_int loses that slow wandering; lesson 11.)
+  // the theory at eta_int loses that slow wandering; lesson 14.)
   const double a2 = radius_ * radius_;
   const double eta = s.interior_time / t / interior_.area() * std::numbers::pi * a2;
   const double kT_inside = s.interior_energy / (2 * s.interior_time);
@@ -417,6 +417,15 @@ Average& GasStatistics::average_of(MeasuredFigures& m, Quantity q) {
   throw std::logic_error("GasStatistics: no such quantity");
 }
 
+Average average_with_error(const BlockingAnalysis& samples, double scale) {
+  Average average{scale * samples.mean(), scale * samples.error()};
+  if (std::isnan(average.error)) {
+    average.why_no_error =
+        samples.count() < BlockingAnalysis::fewest_blocks ? "few samples" : "not yet";
+  }
+  return average;
+}
+
 MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   MeasuredFigures m;
   // H of the speeds now: from the histogram's counts.
@@ -434,16 +443,14 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   if (!(s.duration > 0)) return m;
   for (int q = 0; q < quantity_count; ++q) {
     Average& average = average_of(m, static_cast<Quantity>(q));
+    average = average_with_error(blocking_[static_cast<std::size_t>(q)]);
     average.value = value_of(static_cast<Quantity>(q), s);
-    average.error = blocking_[static_cast<std::size_t>(q)].error();
   }
   // The snapshots' averages.
-  const BlockingAnalysis& pair = structure_.pair_contact();
-  const BlockingAnalysis& wall = structure_.wall_contact_density();
-  m.pair_contact = {pair.mean(), pair.error()};
-  const BlockingAnalysis& pair_difference = structure_.pair_contact_minus_theory();
-  m.pair_contact_minus_theory = {pair_difference.mean(), pair_difference.error()};
-  m.wall_contact_pressure = {kT_ * wall.mean(), kT_ * wall.error()};
+  m.pair_contact = average_with_error(structure_.pair_contact());
+  m.pair_contact_minus_theory =
+      average_with_error(structure_.pair_contact_minus_theory());
+  m.wall_contact_pressure = average_with_error(structure_.wall_contact_density(), kT_);
   // The histogram: the ball-time fraction of each bin, to now.
   const double ball_time = s.duration * static_cast<double>(balls_);
   for (std::size_t b = 0; b < bin_count_.size(); ++b) {

@@ -21,8 +21,9 @@ constexpr double lags_a_decade = 10;
 // Origins this many a tau_E, and every this many of them read every lag.
 constexpr double origins_a_time_unit = 4;
 constexpr long long fewest_long_every = 4;
-// The first origin this many tau_E after the start: about ten collisions a
-// ball, enough for the speeds to be Maxwell's and the neighbourhoods settled.
+// The first origin this many tau_E after the start: about ten pair collisions
+// per ball, enough for the speeds to be Maxwell's and the neighbourhoods
+// settled.
 constexpr double warm_up_time_units = 10;
 // The bulk starts this many radii from a wall (the layers at a wall die out
 // within a few diameters: gas_statistics.hpp).

@@ -28,7 +28,7 @@
 // counted ball that meets a wall within its lags is counted (walls_met); the
 // tests and the lesson show it stays 0.
 //
-// Assumptions: unit mass; the balls' rows are current at every reading (a
+// Assumptions: unit mass; each ball's column of R is current at every reading (a
 // reading due at t is taken before the first collision after t, with the
 // gas as stage 7 hands it to the hook: a reading at t includes every
 // collision at time <= t, as a --dump at t does). The key B starts the
@@ -74,8 +74,8 @@ struct VacfPlan {
 // tau_E / 4, every fourth of them read at every lag (a ball's velocity is
 // forgotten in about one tau_E: closer origins add little to the long lags,
 // and cost a walk of the balls a lag), or fewer if the noted balls would take
-// more than `vacf_memory` bytes; warm-up 10 tau_E (about ten collisions a
-// ball: local equilibrium, Maxwell's speeds). A table too small for any lag
+// more than `vacf_memory` bytes; warm-up 10 tau_E (about ten pair collisions
+// per ball: local equilibrium, Maxwell's speeds). A table too small for any lag
 // gets only the lag 0.
 inline constexpr double longest_lag_in_time_units = 100;
 inline constexpr double vacf_memory = 64.0 * 1024 * 1024;

@@ -69,27 +69,35 @@ void OutputFile::close() {
   if (std::fclose(file_.release()) != 0) fail();
 }
 
-std::optional<std::string> write_whole(const std::string& path, const std::string& text) {
+std::optional<std::string> write_whole(const std::string& path,
+                                       const PieceByPiece& pieces) {
   std::string temporary;
   const int descriptor = new_file_beside(path, temporary);
   if (descriptor < 0) return cannot_write(path);
   // All of it, and on the disk, before it takes the old file's name; each
-  // failure is described by the errno of the call that failed.
+  // failure is described by the errno of the call that failed (the pieces
+  // after a failure are not written).
   std::optional<std::string> failure;
-  for (std::size_t done = 0; !failure && done < text.size();) {
-    const ssize_t wrote = ::write(descriptor, text.data() + done, text.size() - done);
-    if (wrote > 0) {
-      done += static_cast<std::size_t>(wrote);
-    } else if (!(wrote < 0 && errno == EINTR)) {  // a signal: the flag is seen later
-      failure = cannot_write(path);
+  pieces([&](std::string_view piece) {
+    for (std::size_t done = 0; !failure && done < piece.size();) {
+      const ssize_t wrote = ::write(descriptor, piece.data() + done, piece.size() - done);
+      if (wrote > 0) {
+        done += static_cast<std::size_t>(wrote);
+      } else if (!(wrote < 0 && errno == EINTR)) {  // a signal: the flag is seen later
+        failure = cannot_write(path);
+      }
     }
-  }
+  });
   if (!failure && fsync(descriptor) != 0) failure = cannot_write(path);
   if (::close(descriptor) != 0 && !failure) failure = cannot_write(path);
   if (!failure && std::rename(temporary.c_str(), path.c_str()) != 0)
     failure = cannot_write(path);
   if (failure) std::remove(temporary.c_str());
   return failure;
+}
+
+std::optional<std::string> write_whole(const std::string& path, const std::string& text) {
+  return write_whole(path, [&](const auto& write) { write(text); });
 }
 
 RunOutputs::RunOutputs(const Options& options, Display& display)
@@ -161,7 +169,10 @@ void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics,
   write_event_lines();
   events_.close();
   csv_.close();
-  if (dump_path_) dump_failure_ = write_whole(*dump_path_, scene_text(gas));
+  if (dump_path_) {
+    dump_failure_ = write_whole(*dump_path_,
+                                [&](const auto& write) { write_scene_text(gas, write); });
+  }
   if (structure_path_ && statistics)
     structure_failure_ =
         write_whole(*structure_path_, structure_csv(statistics->structure()));

@@ -10,13 +10,14 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "beyond/kinetic_screen.hpp"
+#include "beyond/kinetic_csv.hpp"
 #include "beyond/velocity_autocorrelation.hpp"
 #include "program/options.hpp"
 #include "stage1_data.hpp"
@@ -62,9 +63,19 @@ class OutputFile {
   std::optional<std::string> failure_;
 };
 
-// Writes `text` to `path` whole or not at all: into a new file beside it,
-// which is then renamed over `path`, so that a run that dies while writing
-// never leaves half a scene. Returns "FILE: what went wrong" on failure.
+// A text made a piece at a time, each piece handed to `write` as it is made
+// (stage 2's write_scene_text is one).
+using PieceByPiece =
+    std::function<void(const std::function<void(std::string_view piece)>& write)>;
+
+// Writes the text `pieces` makes to `path` whole or not at all: into a new
+// file beside it, each piece as it comes (so a --dump of 10^6 balls never
+// holds its 96 MB of text), then renamed over `path`, so that a run that
+// dies while writing never leaves half a scene. Returns "FILE: what went
+// wrong" on failure.
+std::optional<std::string> write_whole(const std::string& path,
+                                       const PieceByPiece& pieces);
+// The same for a text made already.
 std::optional<std::string> write_whole(const std::string& path, const std::string& text);
 
 // The outputs the options ask for, from the start of a run to its end.

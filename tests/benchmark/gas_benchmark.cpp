@@ -19,6 +19,8 @@
 //   6. Beside the best peer: build/gas and Graphical-EDMD as processes on
 //      the same gases, 10^3 to 10^5 balls, and build/gas alone at 10^6
 //      (peer_runs.hpp); "not run" for the peer without --peer.
+//   7. Checkpoints: a --dump of 10^3 to 10^6 balls written and read back,
+//      timed as processes (dump_runs.hpp).
 //
 // and two pictures beside it, drawn by gnuplot if it is installed
 // (plots.hpp): collisions per second against N, and the distance from the
@@ -57,6 +59,7 @@
 #include "benchmark_build_info.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
+#include "dump_runs.hpp"
 #include "engine.hpp"
 #include "lyapunov_horizon.hpp"
 #include "peer_runs.hpp"
@@ -968,6 +971,10 @@ int run(const Settings& settings) {
   gas::benchmark::write_peer_csv(settings.out / "peer.csv", peer_runs);
   fs::remove_all(peer_settings.scratch);
 
+  // ---- 7. checkpoints: a dump written and read back
+  const std::string dumps =
+      gas::benchmark::dump_report(settings.smoke, settings.out, sizes.program_time_limit);
+
   // ---- the pictures
   progress("pictures: gnuplot");
   const std::string throughput_picture = gas::benchmark::picture_markdown(
@@ -1175,7 +1182,7 @@ int run(const Settings& settings) {
       "trusted horizon grows in proportion to the bits, and no precision makes it "
       "infinite.\n\n");
   // The horizon the Lyapunov exponent predicts, beside the one measured.
-  add("The factor is the largest Lyapunov exponent lambda (lesson 12), measured by "
+  add("The factor is the largest Lyapunov exponent lambda (lesson 15), measured by "
       "the stages with the tangent dynamics of `stages/beyond/lyapunov.hpp` "
       "(renormalisations shown; `lyapunov.csv`). Collisions a ball are counted as "
       "above: every collision of the gas (walls and pairs), over N. An error of one "
@@ -1261,7 +1268,7 @@ int run(const Settings& settings) {
       "again on the way back, e^(lambda t) eps: the prediction is the trusted "
       "horizon of section 2, ln(a / (100 eps)) / lambda collisions a ball for the "
       "stages' double (k counts collisions as section 2 does: every collision of the "
-      "gas over N; lesson 11 counts a collision of two balls for both, about twice "
+      "gas over N; lesson 12 counts a collision of two balls for both, about twice "
       "as many in the H-theorem scene). Measured: the largest k of the tables whose "
       "return error (stages, double) is below a hundredth of a radius, and the next "
       "k tried.\n\n"
@@ -1324,6 +1331,9 @@ int run(const Settings& settings) {
 
   // 6.
   add(gas::benchmark::peer_section(peer_settings, peer_runs));
+
+  // 7.
+  add(dumps);
 
   {
     std::ofstream file(settings.out / "speed-against-error.md");
