@@ -1,11 +1,7 @@
-// Tests for the velocity autocorrelation function and Enskog's transport
-// coefficients (stages/beyond/velocity_autocorrelation.*, enskog_transport.*;
-// lessons/16-long-time-tail.md).
+// Tests for the velocity autocorrelation function
+// (stages/beyond/velocity_autocorrelation.*; lessons/16-long-time-tail.md).
+// Enskog's coefficients it is compared with: tests/test_enskog_transport.cpp.
 //
-// - The theory: tau_E is Enskog's mean free time in 2D (two formulas, two
-//   files); nu_E -> D_E in the dilute limit; the sound speed is the slope of
-//   the pressure along an adiabat, by finite differences; the tail's factor
-//   is the overlap of two spreading Gaussians, integrated numerically.
 // - The observer's sums are the same sums taken from the gas at the same
 //   moments by a twin run of stage 7 (independently of its bookkeeping).
 // - rho(0) = 1 exactly, in the file build/gas writes.
@@ -27,8 +23,6 @@
 
 #include "beyond/display_steps.hpp"
 #include "beyond/enskog_transport.hpp"
-#include "beyond/hard_disc_fluid.hpp"
-#include "beyond/kinetic_theory.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "beyond/velocity_autocorrelation.hpp"
@@ -68,125 +62,6 @@ Gas square_gas(int count, double eta, int seed, const char* line = "random") {
 }  // namespace
 
 TEST_SUITE("vacf") {
-  TEST_CASE("Enskog: tau_E is the mean free time in 2D and D_E = kT tau_E") {
-    // Two derivations in two files: 1 / tau_E from the exact initial slope
-    // (enskog_transport.cpp), the collision rate from the collision cylinder
-    // (kinetic_theory.cpp). In 2D they are one number; round-off only.
-    for (const double eta : {0.01, 0.1, 0.3, 0.5, 0.69}) {
-      for (const double kT : {0.5, 2.0}) {
-        CAPTURE(eta);
-        const gas::EnskogTransport e = gas::enskog_transport(eta, 1.5, kT);
-        CHECK(e.velocity_time * gas::enskog_collision_rate(eta, 1.5, kT) ==
-              doctest::Approx(1).epsilon(1e-14));
-        CHECK(e.diffusion == doctest::Approx(kT * e.velocity_time).epsilon(1e-15));
-        // D_E = sqrt(kT / pi) / (2 n s g), written out.
-        const double n = eta / (pi * 1.5 * 1.5);
-        CHECK(e.diffusion ==
-              doctest::Approx(std::sqrt(kT / pi) / (2 * n * 3 * e.contact_value))
-                  .epsilon(1e-14));
-      }
-    }
-    CHECK(std::isnan(gas::enskog_transport(0.0, 1, 1).diffusion));
-    CHECK(std::isnan(gas::enskog_transport(0.71, 1, 1).kinematic_viscosity));
-  }
-
-  TEST_CASE("Enskog: nu_E = D_E in the dilute limit and the first density correction") {
-    // Boltzmann's gas (first Sonine approximation, unit mass): the
-    // kinematic viscosity eta_0 / n and the self-diffusion coefficient are
-    // the same number, sqrt(kT / pi) / (2 n s). To first order in eta,
-    // nu_E / D_E = g (1 / g + 2 eta + ...) = 1 + 2 eta g + ...: the
-    // collisional transfer of momentum that diffusion lacks. (A factor off in
-    // either formula shows here; the tolerance 1 % is ten times the next
-    // order at eta = 1e-3, g - 1 and eta g^2 (1 + 8 / pi) / 2.)
-    const gas::EnskogTransport e = gas::enskog_transport(1e-7, 1, 0.5);
-    CHECK(e.kinematic_viscosity / e.diffusion == doctest::Approx(1).epsilon(1e-6));
-    const double eta = 1e-3;
-    const gas::EnskogTransport f = gas::enskog_transport(eta, 1, 0.5);
-    CHECK(f.kinematic_viscosity / f.diffusion - 1 ==
-          doctest::Approx(2 * eta).epsilon(0.01));
-  }
-
-  TEST_CASE("Enskog: the shear viscosity of discs is the d-dimensional one at d = 2") {
-    // Enskog's shear viscosity in d dimensions (enskog_transport.cpp):
-    //   eta_E / eta_0 = (1 / g) (1 + 2^d phi g / (d + 2))^2 + (d / (d + 2)) kappa /
-    //   eta_0,
-    // kappa = Omega_d n^2 g s^(d+1) sqrt(kT / pi) / d^2, eta_0 = ((d + 2) / 8)
-    // Gamma(d / 2) pi^(-(d-1)/2) s^(1-d) sqrt(kT), phi the packed fraction.
-    // At d = 3 it must be Chapman and Cowling's first approximation,
-    // 1 / g + 0.8 b n + 0.7712 (b n g)^2 / g with b n = 4 phi (their
-    // 0.7614 is 0.16 + 0.6112 / 1.016, eta_0 in their third approximation);
-    // at d = 2 the code's 1 / g + 2 eta + (1 + 8 / pi) eta^2 g.
-    const auto enskog_d = [](int d, double phi, double g) {
-      const double s = 1, kT = 1;
-      const double ball = std::pow(pi, d / 2.0) / std::tgamma(d / 2.0 + 1);  // unit ball
-      const double n = phi / (ball * std::pow(s / 2, d));
-      const double sphere = d * ball;  // Omega_d, the unit sphere's area
-      const double eta0 = (d + 2) / 8.0 * std::tgamma(d / 2.0) *
-                          std::pow(pi, -(d - 1) / 2.0) * std::pow(s, 1 - d) *
-                          std::sqrt(kT);
-      const double kappa =
-          sphere * n * n * g * std::pow(s, d + 1) * std::sqrt(kT / pi) / (d * d);
-      const double kinetic = 1 + std::pow(2, d) * phi * g / (d + 2);
-      return kinetic * kinetic / g + d / (d + 2.0) * kappa / eta0;
-    };
-    for (const double phi : {0.05, 0.2, 0.4}) {
-      const double g = 1.7, bn = 4 * phi;
-      CAPTURE(phi);
-      CHECK(enskog_d(3, phi, g) ==
-            doctest::Approx(1 / g + 0.8 * bn + (0.16 + 48 / (25 * pi)) * bn * bn * g));
-    }
-    for (const double eta : {0.1, 0.3, 0.5, 0.65}) {
-      CAPTURE(eta);
-      const gas::EnskogTransport e = gas::enskog_transport(eta, 1, 0.5);
-      const double eta0 = std::sqrt(0.5 / pi) / (2 * 2);
-      CHECK(e.shear_viscosity / eta0 ==
-            doctest::Approx(enskog_d(2, eta, e.contact_value)));
-    }
-  }
-
-  TEST_CASE("Enskog: the sound speed is the slope of the pressure along an adiabat") {
-    // At fixed entropy T moves with n as dT / T = Z dn / n (2D, energy kT a
-    // ball); step along that line with the reference pressure and compare
-    // dP / dn (unit mass) with c^2. Central differences of step 1e-5 leave
-    // an error of order 1e-10 of c^2.
-    for (const double eta : {0.05, 0.3, 0.6}) {
-      CAPTURE(eta);
-      const double kT = 0.7, a = 1, n = eta / (pi * a * a);
-      const double dn = 1e-5 * n;
-      const double z = gas::hard_disc_fluid_compressibility(eta);
-      const auto pressure = [&](double sign) {
-        const double n1 = n + sign * dn;
-        const double kT1 = kT * (1 + sign * z * dn / n);  // along the adiabat
-        return gas::hard_disc_fluid_pressure(n1 * pi * a * a, kT1, a);
-      };
-      const double slope = (pressure(1) - pressure(-1)) / (2 * dn);
-      const double c = gas::hard_disc_sound_speed(eta, kT);
-      CHECK(c * c == doctest::Approx(slope).epsilon(1e-7));
-    }
-    // The dilute limit: c^2 = 2 kT (c_p / c_v = 2 for a 2D gas).
-    CHECK(gas::hard_disc_sound_speed(0, 0.7) == doctest::Approx(std::sqrt(1.4)));
-  }
-
-  TEST_CASE("the tail: a ball's share of its momentum spread over two Gaussians") {
-    // rho(t) = (1 / 2n) times the overlap of the momentum's spread (variance
-    // 2 nu t a direction) with the ball's own (2 D t): integral of
-    // G(r, 2 nu t) G(r, 2 D t) over the plane, here numerically, on a grid
-    // of 1/200 of the wider spread to 8 of them (error below 1e-6).
-    const gas::EnskogTransport e = gas::enskog_transport(0.3, 1, 0.5);
-    const double t = 7;
-    const double vn = 2 * e.kinematic_viscosity * t, vd = 2 * e.diffusion * t;
-    const auto gauss = [](double r2, double v) {
-      return std::exp(-r2 / (2 * v)) / (2 * pi * v);
-    };
-    const double step = std::sqrt(vn) / 200;
-    double overlap = 0;
-    for (int i = 0; i < 1600; ++i) {  // rings of radius r, area 2 pi r dr
-      const double r = (i + 0.5) * step;
-      overlap += gauss(r * r, vn) * gauss(r * r, vd) * 2 * pi * r * step;
-    }
-    CHECK(e.tail(t) == doctest::Approx(overlap / (2 * e.density)).epsilon(1e-5));
-  }
-
   TEST_CASE("the observer's sums are the gas's at the same moments (a twin run)") {
     // 800 balls at 0.3; a few origins and lags. A twin of the gas, run by
     // stage 7 to each moment, gives v(0) . v(t) and v(0) . (r(t) - r(0))

@@ -5,10 +5,13 @@
 // eta and temperature kT, what the velocity autocorrelation function is
 // compared with (beyond/velocity_autocorrelation.hpp): Enskog's decay time
 // tau_E of a ball's velocity, the diffusion coefficient D_E = kT tau_E, the
-// shear viscosity and the kinematic viscosity nu_E, the speed of sound, and
-// the mode-coupling tail rho(t) = 1 / (8 pi n (D_E + nu_E) t). Every formula
-// is derived in enskog_transport.cpp (and in the lesson), and checked there
-// against the three-dimensional results it generalises.
+// shear and bulk viscosities and the kinematic viscosity nu_E, the speed of
+// sound, and the mode-coupling tail rho(t) = 1 / (8 pi n (D_E + nu_E) t).
+// Every formula is derived in enskog_transport.cpp (and in the lesson); the
+// suite computes each coefficient again from the collision rule itself, by
+// Monte Carlo integration in two and three dimensions
+// (tests/test_enskog_transport.cpp). Which papers we could read, and which
+// we could not, enskog_transport.cpp says beside each formula.
 // Article: none; the article ("Gas on the display", 1989) has no
 // transport theory. Everything here is beyond it.
 // Lesson: lessons/16-long-time-tail.md
@@ -30,6 +33,7 @@ struct EnskogTransport {
   double velocity_time = 0;        // tau_E: Enskog's rho(t) = exp(-t / tau_E)
   double diffusion = 0;            // D_E = kT tau_E, area per unit time
   double shear_viscosity = 0;      // eta_E, momentum per unit length (2D)
+  double bulk_viscosity = 0;       // kappa_E, the same unit
   double kinematic_viscosity = 0;  // nu_E = eta_E / n (unit mass), area per unit time
   double sound_speed = 0;          // c, adiabatic, length per unit time
   // The mode-coupling tail rho(t) = tail_coefficient / t (a time).
