@@ -45,4 +45,22 @@ TEST_SUITE("figures") {
     CHECK(lines_of(read_file(scratch.file("lesson-12/h-theorem.csv"))).size() ==
           1 + 80 + 240);
   }
+
+  TEST_CASE("gas-tail-figures --smoke writes the numbers of every picture and check") {
+    // Lesson 16's pictures and checks (tests/figures/tail_figures.cpp), small
+    // and short: three gases of 3000 balls, the chain of dumps over 1875.
+    const gas::testing::Scratch scratch;
+    const std::string command =
+        fmt::format("'{}' --smoke --out '{}' 2>'{}'", GAS_TAIL_FIGURES,
+                    scratch.path.string(), scratch.file("err"));
+    REQUIRE_MESSAGE(std::system(command.c_str()) == 0, "gas-tail-figures --smoke failed");
+    for (const char* name : {"tail-1970.csv", "tail.csv", "summary.csv",
+                             "independent.csv", "independent-program.csv"}) {
+      CAPTURE(name);
+      CHECK(lines_of(read_file(scratch.file(name))).size() > 4);
+    }
+    // One line per lag of the plan in tail.csv, as in each gas's own file.
+    CHECK(lines_of(read_file(scratch.file("tail.csv"))).size() ==
+          lines_of(read_file(scratch.file("tail-1970.csv"))).size());
+  }
 }

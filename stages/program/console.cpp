@@ -16,6 +16,7 @@
 #include "beyond/observer_list.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
+#include "beyond/velocity_autocorrelation.hpp"
 #include "program/key_source.hpp"
 #include "program/run_outputs.hpp"
 #include "program/scene_lookup.hpp"
@@ -163,6 +164,18 @@ class ConsoleRun {
       observers_.emplace(std::vector<CollisionObserver*>{&*statistics_, &*lyapunov_});
       control_.observer = &*observers_;
     }
+    // The velocity autocorrelation (--vacf, lesson 16) on the same hook, with
+    // the others if there are any; nothing of it without --vacf.
+    if (options.vacf_path) {
+      vacf_.emplace(control_.gas);
+      std::vector<CollisionObserver*> all;
+      if (statistics_) all.push_back(&*statistics_);
+      if (lyapunov_) all.push_back(&*lyapunov_);
+      all.push_back(&*vacf_);
+      observers_.emplace(all);
+      control_.observer =
+          all.size() == 1 ? &*vacf_ : static_cast<CollisionObserver*>(&*observers_);
+    }
     // Drawn in place: the frame fits the window, and fits it again when it
     // changes size (resize()).
     if (const auto size = terminal_size(); in_place_ && size)
@@ -233,7 +246,9 @@ class ConsoleRun {
     // However the run ends: the terminal put back, the files closed whole.
     mark_stopped_ticks();
     display_.finish();
-    outputs_.finish(control_.gas, statistics_ ? &*statistics_ : nullptr);
+    if (vacf_) vacf_->catch_up(control_.gas);  // the readings due by the end
+    outputs_.finish(control_.gas, statistics_ ? &*statistics_ : nullptr,
+                    vacf_ ? &*vacf_ : nullptr);
     return ending();
   }
 
@@ -378,9 +393,10 @@ class ConsoleRun {
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
   StepKeeps keeps_;  // what a display step keeps: the centres, the collisions
-  std::optional<GasStatistics> statistics_;   // for --mode stats, --csv, --structure
-  std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 15)
-  std::optional<ObserverList> observers_;     // both on stage 7's hook
+  std::optional<GasStatistics> statistics_;      // for --mode stats, --csv, --structure
+  std::optional<LyapunovExponent> lyapunov_;     // with them (lesson 15)
+  std::optional<VelocityAutocorrelation> vacf_;  // for --vacf (lesson 16)
+  std::optional<ObserverList> observers_;        // all of them on stage 7's hook
   long long stopped_ticks_ = 0;  // printed whole: ticks stopped, not yet marked
   TextScreen screen_;
   std::optional<DensityPicture> density_;  // the table in shades, if so drawn

@@ -217,6 +217,7 @@ constexpr KnownOption known_options[] = {
     {"--dump", read_path<&Options::dump_path>},
     {"--csv", read_path<&Options::csv_path>},
     {"--structure", read_path<&Options::structure_path>},
+    {"--vacf", read_path<&Options::vacf_path>},
     {"--cols", read_screen_size<&Options::columns, smallest_columns>},
     // The screen's rows and two more: the status line, and the cursor below.
     {"--rows", read_screen_size<&Options::rows, smallest_rows + 2>},
@@ -277,13 +278,38 @@ Options parse_options(const std::vector<std::string>& arguments) {
   return options;
 }
 
+namespace {
+
+// The end of --help: the keys, the terminal and the exit status.
+std::string keys_text() {
+  return R"(keys (in a terminal, without Enter, in either case): S stop, R run, B reverse
+  all velocities and run on (a stopped model too), > double T0, < halve T0,
+  0 redraw the screen, E end; beyond the article, A restarts the averages of
+  the statistics (--mode stats, --csv). A line under the table lists them.
+In a terminal, a resized window gets the screen prepared again at its size
+(--cols and --rows keep theirs, cut to the window); a window too small for
+the table says so until it grows.
+When the output is not a terminal, or TERM is dumb, every frame is printed
+whole, headed by a status line, with no escape sequence; with no --frames or
+--until a run into a file or a pipe stops after 100 frames (or as many as
+--keys has keys, if more), and ticks in which the model stands stopped are
+marked by one status line, ending [stopped N ticks].
+Ctrl-C, SIGTERM and SIGHUP end the run as E does: files whole, the dump written.
+Exit status: 0 success, 2 bad usage or bad scene, 1 any other failure (a file
+that cannot be written, say); after a signal 128 + its number (130 for Ctrl-C,
+143 for SIGTERM, 129 for SIGHUP).
+)";
+}
+
+}  // namespace
+
 std::string help_text() {
   return R"(gas - the billiard-ball gas of "Gas on the display" (1989), in a terminal
 
 usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
            [--mode balls|trails|stats|none] [--events FILE] [--dump FILE]
-           [--csv FILE] [--structure FILE] [--cols N] [--rows N]
-           [--step] [--trace] [--bell]
+           [--csv FILE] [--structure FILE] [--vacf FILE]
+           [--cols N] [--rows N] [--step] [--trace] [--bell]
            [--strategy scan|table|plain-grid|grid] [--pictures collisions|steps]
        gas --help | --version
 
@@ -310,6 +336,11 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
                    balls of the interior, and the density of centres near the
                    walls x = 0, A1; a line per bin 0.05a wide:
                    curve,from,to,value,error (curve: pair or wall)
+  --vacf FILE      at exit, write the velocity autocorrelation function of
+                   the balls far from the walls to FILE as CSV, a line per
+                   lag t: t,vacf,vacf_error,vacf_enskog,vacf_tail,
+                   diffusion,diffusion_error,diffusion_enskog (Enskog's
+                   exponential and the mode-coupling tail beside it)
   --cols N         screen width in characters (default: the terminal's,
                    else 80)
   --rows N         screen height in characters (default: the terminal's,
@@ -339,23 +370,7 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
                    built from
 An option given twice is refused.
 
-keys (in a terminal, without Enter, in either case): S stop, R run, B reverse
-  all velocities and run on (a stopped model too), > double T0, < halve T0,
-  0 redraw the screen, E end; beyond the article, A restarts the averages of
-  the statistics (--mode stats, --csv). A line under the table lists them.
-In a terminal, a resized window gets the screen prepared again at its size
-(--cols and --rows keep theirs, cut to the window); a window too small for
-the table says so until it grows.
-When the output is not a terminal, or TERM is dumb, every frame is printed
-whole, headed by a status line, with no escape sequence; with no --frames or
---until a run into a file or a pipe stops after 100 frames (or as many as
---keys has keys, if more), and ticks in which the model stands stopped are
-marked by one status line, ending [stopped N ticks].
-Ctrl-C, SIGTERM and SIGHUP end the run as E does: files whole, the dump written.
-Exit status: 0 success, 2 bad usage or bad scene, 1 any other failure (a file
-that cannot be written, say); after a signal 128 + its number (130 for Ctrl-C,
-143 for SIGTERM, 129 for SIGHUP).
-)";
+)" + keys_text();
 }
 
 }  // namespace gas

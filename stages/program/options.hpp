@@ -47,6 +47,8 @@ struct Options {
   std::optional<PictureRule> pictures;     // --pictures; none: chosen by N
   // --structure FILE
   std::optional<std::string> structure_path;
+  // --vacf FILE
+  std::optional<std::string> vacf_path;
 };
 
 // Reads the arguments after the program's name. Throws UsageError.

@@ -105,11 +105,12 @@ RunOutputs::RunOutputs(const Options& options, Display& display)
       csv_(options.csv_path),
       dump_path_(options.dump_path),
       structure_path_(options.structure_path),
+      vacf_path_(options.vacf_path),
       bell_(options.bell),
       display_(display) {
-  // A dump and the structure are written at the end; whether they can be is
-  // asked now, so that a bad path fails before the run, not after it.
-  for (const auto* path : {&dump_path_, &structure_path_}) {
+  // A dump, the structure and the VACF are written at the end; whether they
+  // can be is asked now, so that a bad path fails before the run, not after it.
+  for (const auto* path : {&dump_path_, &structure_path_, &vacf_path_}) {
     if (!*path) continue;
     std::string probe;
     const int descriptor = new_file_beside(**path, probe);
@@ -163,7 +164,8 @@ void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic
   csv_.write(csv_row(figures, kinetic) + more + "\n");
 }
 
-void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics) {
+void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics,
+                        const VelocityAutocorrelation* vacf) {
   write_event_lines();
   events_.close();
   csv_.close();
@@ -174,13 +176,15 @@ void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics) {
   if (structure_path_ && statistics)
     structure_failure_ =
         write_whole(*structure_path_, structure_csv(statistics->structure()));
+  if (vacf_path_ && vacf) vacf_failure_ = write_whole(*vacf_path_, vacf_csv(*vacf));
 }
 
 std::optional<std::string> RunOutputs::failure() const {
   if (events_.failure()) return events_.failure();
   if (csv_.failure()) return csv_.failure();
   if (dump_failure_) return dump_failure_;
-  return structure_failure_;
+  if (structure_failure_) return structure_failure_;
+  return vacf_failure_;
 }
 
 std::vector<std::string> RunOutputs::written() const {
@@ -189,6 +193,7 @@ std::vector<std::string> RunOutputs::written() const {
     if (*file) files.push_back(file->path());
   if (dump_path_) files.push_back(*dump_path_);
   if (structure_path_) files.push_back(*structure_path_);
+  if (vacf_path_) files.push_back(*vacf_path_);
   return files;
 }
 

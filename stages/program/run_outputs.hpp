@@ -1,5 +1,5 @@
 // What a run leaves behind besides its frames: the --events and --csv files,
-// the --dump and --structure at the end, and the --bell on collisions.
+// the --dump, --structure and --vacf at the end, and the --bell on collisions.
 //
 // Beyond the article: its program only drew (stage 6) and sounded a note at
 // each collision (stage 7's "sound"); these outputs let a run be studied
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "beyond/kinetic_csv.hpp"
+#include "beyond/velocity_autocorrelation.hpp"
 #include "program/options.hpp"
 #include "stage1_data.hpp"
 #include "stage6_output.hpp"
@@ -101,8 +102,10 @@ class RunOutputs {
   // At the end of the run, however it ends: --events and --csv closed on a
   // whole line, and --dump written whole, the gas at its time T (every
   // collision up to T is in --events); --structure written whole from the
-  // statistics (which a run that asks for it has).
-  void finish(const Gas& gas, const GasStatistics* statistics);
+  // statistics (which a run that asks for it has); --vacf written whole from
+  // the velocity autocorrelation (likewise).
+  void finish(const Gas& gas, const GasStatistics* statistics,
+              const VelocityAutocorrelation* vacf = nullptr);
 
   // The first output that could not be written, "FILE: why", if any.
   std::optional<std::string> failure() const;
@@ -123,6 +126,8 @@ class RunOutputs {
   std::optional<std::string> dump_failure_;            // why --dump was not written
   std::optional<std::string> structure_path_;          // --structure
   std::optional<std::string> structure_failure_;       // why it was not written
+  std::optional<std::string> vacf_path_;               // --vacf
+  std::optional<std::string> vacf_failure_;            // why it was not written
   bool bell_ = false;                                  // --bell
   Display& display_;                                   // where the bell rings
   std::chrono::steady_clock::time_point last_bell_{};  // when it last rang
