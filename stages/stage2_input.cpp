@@ -142,6 +142,20 @@ std::string keyword_hint(std::string_view keyword) {
   return hint;
 }
 
+// A 'ball' line's numbers into `scene`: x y vx vy, and SINCE if there is a
+// fifth (its line's count of numbers already checked).
+void add_ball(const std::vector<double>& v, int line_number, SceneText& scene) {
+  if (static_cast<double>(scene.balls.size()) >= most_balls) {
+    fail(scene.file_name, line_number,
+         fmt::format("ball {}: a scene holds at most {} balls", scene.balls.size() + 1,
+                     most_balls));
+  }
+  const bool since_given = v.size() == 5;
+  scene.balls.push_back(Ball{v[0], v[1], v[2], v[3], since_given ? v[4] : 0.0});
+  scene.ball_lines.push_back(line_number);
+  scene.since_given.push_back(since_given);
+}
+
 // One line of the file into `scene`: the comment after '#' cut, the words
 // split, the keyword's numbers read and kept with their line.
 void read_line(std::string_view line, int line_number, SceneText& scene) {
@@ -199,15 +213,7 @@ void read_line(std::string_view line, int line_number, SceneText& scene) {
                        count));
     }
     const bool since_given = count == 5;
-    const std::vector<double> v = numbers(since_given ? 5 : 4, "x y vx vy");
-    if (static_cast<double>(scene.balls.size()) >= most_balls) {
-      fail(scene.file_name, line_number,
-           fmt::format("ball {}: a scene holds at most {} balls", scene.balls.size() + 1,
-                       most_balls));
-    }
-    scene.balls.push_back(Ball{v[0], v[1], v[2], v[3], since_given ? v[4] : 0.0});
-    scene.ball_lines.push_back(line_number);
-    scene.since_given.push_back(since_given);
+    add_ball(numbers(since_given ? 5 : 4, "x y vx vy"), line_number, scene);
   } else if (keyword == "random" || keyword == "lattice") {
     const std::vector<double> v = numbers(3, "COUNT SEED SPEED");
     if (scene.random) {

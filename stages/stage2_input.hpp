@@ -73,7 +73,7 @@ inline constexpr double largest_magnitude = 1e75;
 // The most balls a scene may hold: its 'ball' lines and the COUNT of its
 // 'random' line together (data/README.md). 10^6: research runs of hard discs
 // go that far, and the program runs such a gas in some 100 bytes a ball
-// (lesson 10). A --dump of any gas the program runs holds at most as many
+// (lesson 11). A --dump of any gas the program runs holds at most as many
 // 'ball' lines, so it always reads back.
 inline constexpr double most_balls = 1e6;
 

@@ -45,20 +45,25 @@ TEST_SUITE("benchmark") {
           "\n## 3. Time reversal\n", "\n## 4. What an event-driven program buys\n",
           "\n## 5. The program as users run it\n",
           "\n## 6. Beside the best peer, and a million balls\n",
-          "\n## 7. Checkpoints: a dump written and read back\n"}) {
+          "\n## 7. What the tuning buys\n",
+          "\n## 8. Checkpoints: a dump written and read back\n"}) {
       CHECK_MESSAGE(report.find(heading) != std::string::npos, "no heading " << heading);
     }
     // The machine and the build are described.
     for (const char* row : {"| CPU |", "| compiler |", "| build type |", "| flags |",
                             "| one read from memory, at random among"})
       CHECK_MESSAGE(report.find(row) != std::string::npos, "no row " << row);
-    // Six targets are judged: two on the program (section 5), one on
-    // --events (section 6); the peer's is not (no --peer: not run).
+    // Four targets are judged, met or an open goal with its reason: the
+    // default scene (section 1), two on the program (section 5), one on
+    // --events (section 6); the grid's at 10^4 and 10^5 are not (not
+    // measured in a smoke run), nor the peer's (no --peer: not run).
     std::size_t judged = 0;
-    for (std::size_t at = report.find("met**"); at != std::string::npos;
-         at = report.find("met**", at + 1))
-      ++judged;
-    CHECK(judged == 6);
+    for (const char* verdict : {"met**", "**open**: "}) {
+      for (std::size_t at = report.find(verdict); at != std::string::npos;
+           at = report.find(verdict, at + 1))
+        ++judged;
+    }
+    CHECK(judged == 4);
     // Each section's numbers: the tables have rows for every way and type.
     for (const char* cell :
          {"| float |", "| double |", "| long double |", "| __float128 |",
@@ -80,8 +85,15 @@ TEST_SUITE("benchmark") {
     CHECK_MESSAGE(peer.find("**not run**: no checkout given") != std::string::npos, peer);
     CHECK_MESSAGE(peer.find("\n| 200 | ") != std::string::npos, peer);
     CHECK_MESSAGE(peer.find("failed") == std::string::npos, peer);
-    // Section 7: the tiny scene dumped, read, and continued to the same bytes.
-    const std::string dumps = report.substr(report.find("\n## 7."));
+    // Section 7: the plain grid beside the tuned, and the steps.
+    const std::string tuning = report.substr(
+        report.find("\n## 7."), report.find("\n## 8.") - report.find("\n## 7."));
+    CHECK_MESSAGE(tuning.find("\n| 200 | ") != std::string::npos, tuning);
+    CHECK_MESSAGE(tuning.find("failed") == std::string::npos, tuning);
+    CHECK_MESSAGE(tuning.find("| 6. The calendar's look ahead |") != std::string::npos,
+                  tuning);
+    // Section 8: the tiny scene dumped, read, and continued to the same bytes.
+    const std::string dumps = report.substr(report.find("\n## 8."));
     CHECK_MESSAGE(dumps.find("\n| 200 | ") != std::string::npos, dumps);
     CHECK_MESSAGE(dumps.find("| identical |") != std::string::npos, dumps);
     CHECK_MESSAGE(dumps.find("failed") == std::string::npos, dumps);

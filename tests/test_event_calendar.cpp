@@ -12,7 +12,9 @@
 // - a gas whose pace changes by a factor 10^4 halfway, so that the calendar
 //   must lay itself out again;
 // - huge times (beyond the last day the calendar counts) and an empty
-//   calendar.
+//   calendar;
+// - what an owner that looks ahead reads (the tuned grid): each new day is
+//   told, and the balls on today's page are the ones whose keys fall today.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -48,6 +50,9 @@ struct Keys final : EventCalendar::Places {
   std::uint64_t place(int ball) const override {
     return place_of[static_cast<std::size_t>(ball)];
   }
+  // What it tells of each new day, counted.
+  mutable long long new_days = 0;
+  void new_day() const override { ++new_days; }
 };
 
 // A place for a ball's key: one of a few, so that ties of time are often
@@ -182,5 +187,43 @@ TEST_SUITE("stage4") {
       REQUIRE(both.calendar.earliest(both.keys) == expected);
       both.schedule(expected, never, 0);
     }
+  }
+
+  TEST_CASE("event calendar: each new day told, and today's page read as the grid does") {
+    std::mt19937_64 random(6);
+    Pair both(400);
+    const auto next_time = gas_like(1.0);
+    for (int ball = 1; ball <= 400; ++ball)
+      both.schedule(ball, next_time(0.0, random), place_for(ball, random));
+    long long layouts = -1, days_before = 0;  // new days told before today's layout
+    int checked = 0;
+    for (int q = 0; q < 20000; ++q) {
+      const int found = both.calendar.earliest(both.keys);
+      REQUIRE(found == both.keys.earliest());
+      const std::int32_t today = both.calendar.today();
+      if (both.calendar.layouts() != layouts) {
+        // Laid out afresh during this question: today began again at 0.
+        layouts = both.calendar.layouts();
+        days_before = both.keys.new_days - today;
+      } else {
+        // Told of each day today moved on, once.
+        CHECK(both.keys.new_days - days_before == today);
+        ++checked;
+      }
+      // The earliest ball is on today's page, its key falling today; every
+      // ball on the page whose key falls today has a key no earlier.
+      bool on_page = false;
+      for (int ball = both.calendar.first_on_page(today); ball != 0;
+           ball = both.calendar.next_on_page(ball)) {
+        if (both.calendar.key_day(ball) != today) continue;
+        on_page = on_page || ball == found;
+        CHECK(both.keys.time[static_cast<std::size_t>(ball)] >=
+              both.keys.time[static_cast<std::size_t>(found)]);
+      }
+      CHECK(on_page);
+      const double now = both.keys.time[static_cast<std::size_t>(found)];
+      both.schedule(found, next_time(now, random), place_for(found, random));
+    }
+    CHECK(checked > 15000);
   }
 }

@@ -876,7 +876,7 @@ TEST_SUITE("lessons") {
           "lessons/3-screen-preparation.md", "lessons/4-first-collision.md",
           "lessons/5-new-coordinates.md", "lessons/6-output.md",
           "lessons/7-model-control.md", "lessons/8-errata.md",
-          "lessons/9-time-reversal.md", "lessons/10-scaling.md",
+          "lessons/9-time-reversal.md", "lessons/10-scaling.md", "lessons/11-memory.md",
           "lessons/12-statistics-screen.md", "lessons/13-box-and-bulk.md",
           "lessons/14-error-bars.md", "lessons/15-chaos.md",
           "lessons/16-long-time-tail.md"}) {

@@ -1,7 +1,8 @@
-// The three ways of stage 4 — the article's scan, the table of next events,
-// the cell grid with its event queue — give the same collisions.
+// The ways of stage 4 — the article's scan, the table of next events, the
+// plain cell grid with its event calendar, and the tuned grid — give the
+// same collisions.
 //
-// Not "nearly the same": the table and the grid compute every prediction
+// Not "nearly the same": the table and the grids compute every prediction
 // with stage 4's own time_to_wall and time_of_contact on the same rows of R,
 // and take the earliest by the scan's order (time, then walls of ball 1,
 // walls of ball 2, ..., pairs N3 < N4 in order). So the sequences of
@@ -18,8 +19,9 @@
 //   full of exact ties, random gases up to 20000 balls, a cluster whose
 //   lists outgrow the grid's records, with the B key and
 //   display steps that leave found collisions waiting.
-// - The grid's layout: cells at least 2a (1 + margin) wide, and not a cell
-//   per pixel of a huge, nearly empty table.
+// - The grids' layout: cells at least 2a (1 + margin) wide, and not a cell
+//   per pixel of a huge, nearly empty table; the tuned grid's bound on the
+//   cells along a side.
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
@@ -34,6 +36,7 @@
 #include "beyond/cell_grid.hpp"
 #include "beyond/cell_layout.hpp"
 #include "beyond/event_table.hpp"
+#include "beyond/plain_grid.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
 #include "program/console.hpp"
@@ -51,7 +54,8 @@ using gas::Strategy;
 using gas::testing::source_path;
 using gas::testing::table_with;
 
-constexpr Strategy all_strategies[] = {Strategy::scan, Strategy::table, Strategy::grid};
+constexpr Strategy all_strategies[] = {Strategy::scan, Strategy::table,
+                                       Strategy::plain_grid, Strategy::grid};
 
 std::uint64_t bits(double x) {
   return std::bit_cast<std::uint64_t>(x);
@@ -114,6 +118,7 @@ Run run(const Gas& start, Strategy strategy, std::size_t count,
 std::size_t check_same_runs(const Gas& gas, std::size_t count,
                             std::vector<Strategy> which = {Strategy::scan,
                                                            Strategy::table,
+                                                           Strategy::plain_grid,
                                                            Strategy::grid},
                             const std::string& keys = "") {
   const Run reference = run(gas, which.front(), count, keys);
@@ -293,10 +298,11 @@ TEST_SUITE("strategies") {
       CAPTURE(scene);
       const Gas gas = gas::read_scene_file(source_path(scene));
       // The scan only where it is quick: up to 200 balls.
-      std::vector<Strategy> which = {Strategy::table, Strategy::grid};
+      std::vector<Strategy> which = {Strategy::table, Strategy::plain_grid,
+                                     Strategy::grid};
       if (gas.balls.size() <= 200) which.insert(which.begin(), Strategy::scan);
       if (gas.balls.size() > 2000)
-        which = {Strategy::grid};  // nothing to compare quickly
+        which = {Strategy::plain_grid, Strategy::grid};  // the table is slow there
       if (which.size() < 2) continue;
       compared += check_same_runs(gas, 3000, which);
     }
@@ -326,17 +332,21 @@ TEST_SUITE("strategies") {
     crowd.display_step = 0.37;  // most steps end before the collision found
     const std::string keys = std::string(500, '.') + "B" + std::string(300, '.') + "B>>" +
                              std::string(200, '.') + "<B";
-    CHECK(check_same_runs(crowd, 6000, {Strategy::scan, Strategy::table, Strategy::grid},
-                          keys) == 6000);
+    CHECK(check_same_runs(
+              crowd, 6000,
+              {Strategy::scan, Strategy::table, Strategy::plain_grid, Strategy::grid},
+              keys) == 6000);
   }
 
   TEST_CASE("strategies: random gases of 300 and 1000 balls at area fraction 0.3") {
     // 300 balls: every way, 3000 collisions (the scan is slow here).
     const Gas three_hundred = scene_text("a 1\nT0 1\nA1 56\nA2 56\nrandom 300 11 1\n");
     CHECK(check_same_runs(three_hundred, 3000) == 3000);
-    // 1000 balls: the table and the grid, 3x10^4 collisions (30 per ball).
+    // 1000 balls: the table and the grids, 3x10^4 collisions (30 per ball).
     const Gas thousand = scene_text("a 1\nT0 1\nA1 102\nA2 102\nrandom 1000 12 1\n");
-    CHECK(check_same_runs(thousand, 30000, {Strategy::table, Strategy::grid}) == 30000);
+    CHECK(check_same_runs(thousand, 30000,
+                          {Strategy::table, Strategy::plain_grid, Strategy::grid}) ==
+          30000);
   }
 
   TEST_CASE(
@@ -380,16 +390,27 @@ TEST_SUITE("strategies") {
     }
     gas::CellGrid grid;
     grid.rebuild(cluster, gas::centre_limits(cluster));
-    CHECK(grid.cell_width() > 2.5 * 8);  // all in one cell
+    CHECK(grid.cells().cell_width > 2.5 * 8);  // all in one cell
     CHECK(check_same_runs(cluster, 3000) == 3000);
     // 20000 balls: more pages in the calendar than the lattices and the
     // small gases use, and a calendar laid out from a random start.
     const Gas big = scene_text("a 1\nT0 1\nA1 458\nA2 458\nrandom 20000 13 1\n");
-    CHECK(check_same_runs(big, 2000, {Strategy::table, Strategy::grid}) == 2000);
+    CHECK(check_same_runs(big, 2000,
+                          {Strategy::table, Strategy::plain_grid, Strategy::grid}) ==
+          2000);
   }
 
   TEST_CASE(
-      "strategies: the grid's cells are at least 2a (1 + margin) wide and not too many") {
+      "strategies: the grids' cells are at least 2a (1 + margin) wide and not too "
+      "many") {
+    // Both grids lay out their cells alike.
+    const auto layouts = [](const Gas& gas) {
+      gas::PlainGrid plain;
+      plain.rebuild(gas, gas::centre_limits(gas));
+      gas::CellGrid tuned;
+      tuned.rebuild(gas, gas::centre_limits(gas));
+      return std::vector<gas::CellLayout>{plain.cells(), tuned.cells()};
+    };
     struct Table {
       double radius, width, height;
       std::size_t balls;
@@ -406,24 +427,24 @@ TEST_SUITE("strategies") {
         gas.balls.push_back({t.radius + static_cast<double>(i % 2) * 2 * t.radius,
                              t.radius + static_cast<double>(i / 2) * 2 * t.radius, 1, 1,
                              0});
-      gas::CellGrid grid;
-      grid.rebuild(gas, gas::centre_limits(gas));
-      const double smallest = 2 * t.radius * (1 + gas::CellGrid::margin);
-      CHECK(grid.columns() >= 1);
-      CHECK(grid.rows() >= 1);
-      if (grid.columns() > 1) CHECK(grid.cell_width() >= smallest);
-      if (grid.rows() > 1) CHECK(grid.cell_height() >= smallest);
-      CHECK(grid.cell_width() * grid.columns() == doctest::Approx(t.width));
-      // No more cells than 4 per ball and 16 more.
-      CHECK(static_cast<double>(grid.columns()) * grid.rows() <= 4.0 * t.balls + 16);
+      const double smallest = 2 * t.radius * (1 + gas::grid_margin);
+      for (const gas::CellLayout& cells : layouts(gas)) {
+        CHECK(cells.columns >= 1);
+        CHECK(cells.rows >= 1);
+        if (cells.columns > 1) CHECK(cells.cell_width >= smallest);
+        if (cells.rows > 1) CHECK(cells.cell_height >= smallest);
+        CHECK(cells.cell_width * cells.columns == doctest::Approx(t.width));
+        // No more cells than 4 per ball and 16 more.
+        CHECK(static_cast<double>(cells.columns) * cells.rows <= 4.0 * t.balls + 16);
+      }
     }
     // The default scene: 31 x 23 cells would fit, but 7 balls need no more than
     // 4 x 7 + 16 = 44 cells.
     Gas seven = gas::parse_scene(gas::default_scene_text, gas::default_scene_name);
-    gas::CellGrid grid;
-    grid.rebuild(seven, gas::centre_limits(seven));
-    CHECK(grid.columns() == 7);
-    CHECK(grid.rows() == 5);
+    for (const gas::CellLayout& cells : layouts(seven)) {
+      CHECK(cells.columns == 7);
+      CHECK(cells.rows == 5);
+    }
   }
 
   TEST_CASE(
@@ -461,39 +482,44 @@ TEST_SUITE("strategies") {
 
   TEST_CASE("strategies: a table longer than a grid record can number its columns") {
     // 20000 balls in one line of cells 200000 a long: 4 x 20000 + 16 cells
-    // would be allowed, 99900 fit, but a record numbers columns in 16 bits:
-    // the grid lays out 65535, each only longer, and still finds every
-    // collision. The balls move in pairs towards each other, 10 apart, at
-    // speed 1: the first 10000 collisions are the pairs (1, 2), (3, 4), ...,
-    // all at T = 4 exactly, in the scan's order of ties.
+    // would be allowed, 99900 fit, but the tuned grid's record numbers cell
+    // columns in 13 bits: it lays out 8191, each only longer, and still finds
+    // every collision (and so does the plain grid, with 80016). The balls move in pairs
+    // towards each other, 10 apart, at speed 1: the first 10000 collisions are the pairs
+    // (1, 2), (3, 4), ..., all at T = 4 exactly, in the scan's order of ties.
     std::string text = "a 1\nT0 50\nA1 200000\nA2 3\nN 20000\n";
     for (int i = 0; i < 20000; ++i)
       text += fmt::format("ball {} 1.5 {} 0\n", 5 + 10 * i, i % 2 == 0 ? 1 : -1);
     const Gas line = scene_text(text);
     gas::CellGrid grid;
     grid.rebuild(line, gas::centre_limits(line));
-    CHECK(grid.columns() == 0xFFFF);
-    CHECK(grid.rows() == 1);
-    const Run run_of_grid = run(line, Strategy::grid, 10000);
-    REQUIRE(run_of_grid.collisions.size() == 10000);
-    int as_expected = 0;
-    for (int k = 0; k < 10000; ++k) {
-      const Collision& c = run_of_grid.collisions[static_cast<std::size_t>(k)];
-      as_expected += c.kind == CollisionKind::balls && c.time == 4 &&
-                     c.first == 2 * k + 1 && c.second == 2 * k + 2;
+    CHECK(grid.cells().columns == gas::CellGrid::most_cells_along);
+    CHECK(grid.cells().columns == 8191);
+    CHECK(grid.cells().rows == 1);
+    for (const Strategy strategy : {Strategy::plain_grid, Strategy::grid}) {
+      CAPTURE(std::string(gas::strategy_name(strategy)));
+      const Run run_of_grid = run(line, strategy, 10000);
+      REQUIRE(run_of_grid.collisions.size() == 10000);
+      int as_expected = 0;
+      for (int k = 0; k < 10000; ++k) {
+        const Collision& c = run_of_grid.collisions[static_cast<std::size_t>(k)];
+        as_expected += c.kind == CollisionKind::balls && c.time == 4 &&
+                       c.first == 2 * k + 1 && c.second == 2 * k + 2;
+      }
+      CHECK(as_expected == 10000);
     }
-    CHECK(as_expected == 10000);
   }
 }
 
 TEST_SUITE("console") {
-  TEST_CASE("parse_options: --strategy scan or table or grid and nothing else") {
+  TEST_CASE(
+      "parse_options: --strategy scan, table, plain-grid or grid and nothing else") {
     CHECK_FALSE(gas::parse_options({}).strategy.has_value());
     CHECK(gas::parse_options({"--strategy", "table"}).strategy == Strategy::table);
     CHECK(gas::parse_options({"--strategy=grid"}).strategy == Strategy::grid);
     CHECK(gas::parse_options({"--strategy", "scan"}).strategy == Strategy::scan);
     CHECK_THROWS_WITH_AS(gas::parse_options({"--strategy", "heap"}),
-                         "--strategy takes scan, table or grid, not 'heap'",
+                         "--strategy takes scan, table, plain-grid or grid, not 'heap'",
                          gas::UsageError);
     CHECK_THROWS_WITH_AS(gas::parse_options({"--strategy"}), "--strategy needs a value",
                          gas::UsageError);
@@ -509,7 +535,7 @@ TEST_SUITE("console") {
       CAPTURE(arguments.front());
       const auto chosen = gas::testing::run_program(arguments);
       REQUIRE(chosen.status == 0);
-      for (const char* strategy : {"scan", "table", "grid"}) {
+      for (const char* strategy : {"scan", "table", "plain-grid", "grid"}) {
         std::vector<std::string> with = arguments;
         with.insert(with.end(), {"--strategy", strategy});
         const auto run = gas::testing::run_program(with);

@@ -5,9 +5,9 @@
 // length across, and finds the cell that holds a point. With cells at least 2a
 // across, two centres in cells that are not neighbours are more than 2a apart,
 // so a ball needs to be compared only with the balls of the 3 x 3 cells around
-// its own. Three parts of the program rest on that: the cell grid of stage 4
-// (beyond/cell_grid.*), the placement of the balls of a 'random' line
-// (beyond/random_placement.*) and the pairs of the fluid's structure
+// its own. Three parts of the program rest on that: the cell grids of stage 4
+// (beyond/plain_grid.*, beyond/cell_grid.*), the placement of the balls of a 'random'
+// line (beyond/random_placement.*) and the pairs of the fluid's structure
 // (beyond/fluid_structure.*). All lay out their cells here; the placement
 // files the centres of one moment in CellLists (the structure sorts its
 // centres by cell itself, each pair met once).
@@ -67,6 +67,24 @@ inline CellLayout lay_out_cells(double width, double height, double smallest, do
   }
   return CellLayout{static_cast<int>(columns), static_cast<int>(rows), width / columns,
                     height / rows};
+}
+
+// How much wider than 2a a grid's cell is at least, as a fraction of 2a. Two
+// balls in cells that are not neighbours are then more than 2a (1 + margin)
+// apart; the margin is far above the rounding of any centre (~1e-16 of the
+// table's size, and of |v| T), so a grid's idea of which cell holds a centre
+// can never be wrong by enough to hide a collision.
+inline constexpr double grid_margin = 1.0 / 1024;
+
+// The cells of a grid of stage 4 (beyond/plain_grid.*, beyond/cell_grid.*)
+// for `balls` balls of radius `radius`: at least 2a (1 + margin) wide, and
+// not many more cells than balls (a huge table with a few balls needs few
+// cells), nor more than `most_along` along a side (wider cells only hold
+// more balls).
+inline CellLayout grid_cells(double width, double height, double radius,
+                             std::size_t balls, double most_along = HUGE_VAL) {
+  return lay_out_cells(width, height, 2 * radius * (1 + grid_margin),
+                       4.0 * static_cast<double>(balls) + 16, most_along, most_along);
 }
 
 // Points filed by cell, for the two passes that look at a moment's centres

@@ -28,27 +28,6 @@ constexpr std::size_t most_waits_sampled = 1 << 16;
 // three.)
 constexpr std::uint64_t looking_per_question = 16;
 
-// The calendar looks ahead only for this many balls or more: with fewer, the
-// books (some 100 bytes a ball) are read from the caches (second level: 512
-// KiB a core on the machines measured; the third, a few MiB), waits are
-// short, and the look ahead's work is a loss. Measured on build/gas, medians
-// of 5 interleaved runs against the same build without the look ahead: 13 %
-// slower at 3000 balls, even at 6000; 15 % slower at 10^4 and 8 % at 15000
-// (since the look ahead asks for the cells a crossing gathers: when it asked
-// for the 3 x 3 cells of every event, and the books were 146 bytes a ball,
-// it was 15 % faster at 10^4); 14 % faster at 20000, 26 % at 30000.
-constexpr std::size_t look_ahead_from = 1 << 14;
-
-// The look ahead's stages (see the header), in days before a ball's day:
-// the line of pages, the first ball's entry, the second ball's entry, the
-// owner's steps 0 to 3. (Tried: a day further for every stage; not faster.
-// The owner's fourth step, for a meeting's partner, was 6 % faster at 10^6
-// balls, and no slower at 10^5.)
-constexpr std::int32_t pages_ahead = 10;
-constexpr std::int32_t first_entries_ahead = 6;
-constexpr std::int32_t second_entries_ahead = 5;
-constexpr std::int32_t owner_ahead[EventCalendar::Places::steps] = {4, 3, 2, 1};
-
 }  // namespace
 
 void EventCalendar::reset(std::size_t count) {
@@ -62,7 +41,6 @@ void EventCalendar::reset(std::size_t count) {
   layouts_ = 0;
   today_ = 0;
   questions_ = looked_ = 0;
-  looking_ahead_ = count >= look_ahead_from;
 }
 
 // The day a key's time falls on: floor((time - start of day 0) x days per
@@ -161,42 +139,6 @@ int EventCalendar::earliest_of_today(const Places& places) {
   return best;
 }
 
-// Today has moved on a day: the look ahead's stages, each on its day ahead
-// (see the header). Reads only pages and entries asked for a day before (a
-// page's third ball and later: rare, and read as they come). (Ball 0's
-// entry, on an empty page, is read as any other: its `next` is 0.)
-void EventCalendar::look_ahead(const Places& places) const {
-  const auto first_on = [&](std::int32_t ahead) { return page(today_ + ahead); };
-  const auto entry_of = [&](std::int32_t ball) -> const Entry& {
-    return entries_[static_cast<std::size_t>(ball)];
-  };
-  __builtin_prefetch(&page(today_ + pages_ahead));
-  __builtin_prefetch(&entry_of(first_on(first_entries_ahead)));
-  __builtin_prefetch(&entry_of(entry_of(first_on(second_entries_ahead)).next));
-  for (int step = 0; step < Places::steps; ++step) {
-    const std::int32_t day = today_ + owner_ahead[step];
-    for (std::int32_t ball = first_on(owner_ahead[step]); ball != 0;) {
-      const Entry& entry = entry_of(ball);
-      if (entry.day == day) places.prefetch(ball, step);
-      ball = entry.next;
-    }
-  }
-}
-
-// (Step 1 reads the entry step 0 asked for.)
-void EventCalendar::prefetch(int ball, int step) const {
-  const Entry& entry = entries_[static_cast<std::size_t>(ball)];
-  if (step == 0) {
-    __builtin_prefetch(&entry);
-  } else if (entry.day != off) {
-    __builtin_prefetch(&page(entry.day));
-  }
-}
-
-void EventCalendar::ask_day_early(double time) const {
-  if (laid_out_) __builtin_prefetch(&page(day_of(time)));
-}
-
 // [anchor: calendar-earliest]
 int EventCalendar::earliest(const Places& places) {
   if (on_calendar_ == 0) return 0;
@@ -218,7 +160,7 @@ int EventCalendar::earliest(const Places& places) {
     } else {
       ++today_;
       ++looked_;
-      if (looking_ahead_) look_ahead(places);
+      places.new_day();
     }
   }
 }

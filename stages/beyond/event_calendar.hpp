@@ -1,4 +1,4 @@
-// Stage 4 — first collision: an event calendar, the cell grid's queue
+// Stage 4 — first collision: an event calendar, the cell grids' queue
 // (beyond the article).
 //
 // What this file does: holds one key per ball — the time of the ball's
@@ -22,23 +22,6 @@
 // calendar was when it was last asked (model time runs forward); a key set
 // earlier all the same (round-off can place an event a hair in the past)
 // counts as today's. At most 2^31 - 1 balls.
-//
-// Looking ahead (beyond the article, and beyond Brown): past some 10^4
-// balls, each event waits for main memory, line after line (the ball's
-// entry, its books, its neighbours' books), each line's address read from
-// the line before. But the calendar knows which balls come next: those on
-// the pages of the next few days. So whenever today moves on a day, it asks
-// memory early, in a pipeline over the days ahead (a day holds about two
-// events), for what those balls' events will read: ten days ahead the
-// line of pages, six and five days ahead the entries of a page's first two
-// balls; four, three, two and one day ahead it asks its owner
-// (`Places::prefetch`, steps 0 to 3) for the ball's own books, then for
-// the lines those point to, and so on, a step a day. No stage
-// waits for memory itself: each reads only lines that an earlier stage
-// asked for a day before. A prefetch is only a hint to the processor:
-// nothing it does changes an answer. With fewer than 16384 balls the books
-// are read from the caches and the calendar does not look ahead (there it
-// would cost more than it saves).
 #pragma once
 
 #include <cstdint>
@@ -51,19 +34,13 @@ namespace gas {
 class EventCalendar {
  public:
   // What the calendar asks its owner: when two keys have the same time, the
-  // second part of a ball's key, its place in the scan's order; and when it
-  // looks ahead, to prefetch.
+  // second part of a ball's key, its place in the scan's order. And it tells
+  // the owner each time today moves on a day (the tuned grid looks ahead
+  // from there: beyond/cell_grid.hpp, step 6).
   class Places {
    public:
     virtual std::uint64_t place(int ball) const = 0;
-    // The calendar's look ahead: `ball`'s event is a few days away; start
-    // fetching from memory what the owner will read for it (no result may
-    // change). `step` 0, four days before: the lines the owner finds by
-    // the ball's number; step 1, a day later: the lines whose addresses
-    // step 0's lines hold (in the cache by then); steps 2 and 3: the lines
-    // whose addresses the step before's lines hold. None by default.
-    virtual void prefetch(int /*ball*/, int /*step*/) const {}
-    static constexpr int steps = 4;  // how many steps the owner is asked for
+    virtual void new_day() const {}
 
    protected:
     ~Places() = default;
@@ -80,14 +57,16 @@ class EventCalendar {
   // an event.
   int earliest(const Places& places);
 
-  // For the owner's look ahead: asks memory early for what `schedule(ball)`
-  // will read: step 0, the ball's entry; step 1 (the entry in the cache by
-  // then), the page of its day.
-  void prefetch(int ball, int step) const;
-
-  // Asks memory early for the page that a key of `time` would go on (a
-  // hint: `schedule` may follow while the page is on its way).
-  void ask_day_early(double time) const;
+  // What an owner that looks ahead reads: today; the first ball on the page
+  // of a day, and the next on its page after a ball (0: no more); the day a
+  // ball's key falls on (a page also holds the balls of later years). And,
+  // to ask memory for them early, where a page and an entry are.
+  std::int32_t today() const { return today_; }
+  int first_on_page(std::int32_t day) const { return page(day); }
+  int next_on_page(int ball) const { return entry(ball).next; }
+  std::int32_t key_day(int ball) const { return entry(ball).day; }
+  const void* page_address(std::int32_t day) const { return &page(day); }
+  const void* entry_address(int ball) const { return &entry(ball); }
 
   // How many times it was laid out since `reset` (for tests).
   long long layouts() const { return layouts_; }
@@ -113,11 +92,11 @@ class EventCalendar {
   const std::int32_t& page(std::int32_t day) const {
     return page_[static_cast<std::uint64_t>(day) & page_mask_];
   }
+  const Entry& entry(int ball) const { return entries_[static_cast<std::size_t>(ball)]; }
   void put_on_page(int ball);
   void take_off_page(int ball);
   void lay_out();
   int earliest_of_today(const Places& places);
-  void look_ahead(const Places& places) const;
 
   LargePageVector<Entry> entries_;      // by ball number 1..N (entry 0 unused)
   std::vector<double> waits_;           // lay_out's scratch (a sample of the keys)
@@ -131,7 +110,6 @@ class EventCalendar {
   std::int32_t today_ = 0;              // the day of the earliest key
   std::uint64_t questions_ = 0;         // calls of `earliest` since the last check
   std::uint64_t looked_ = 0;            // balls compared and empty days turned since
-  bool looking_ahead_ = false;          // does it prefetch (enough balls)?
 };
 
 }  // namespace gas

@@ -3,7 +3,7 @@
 // What this file does: keeps, for every ball, the earliest event it takes
 // part in (a wall, or a meeting with another ball) and finds TC, K, N1, N2
 // as the earliest entry of that table. After a collision only the balls that
-// collided have new rows of R, so only the predictions involving them are
+// collided have new columns of R, so only the predictions involving them are
 // made again: each of them against the walls and every other ball (the other
 // balls' entries improve if the new prediction is earlier), and, in full, any
 // ball whose entry named one of them as its partner (that prediction is gone).
@@ -16,7 +16,7 @@
 //
 // Assumptions: between two calls of `first`, the gas changes only by the
 // collision passed to `update` (stage 5's apply_collision); after anything
-// else that rewrites rows of R (the B key, a new scene), call `rebuild`.
+// else that rewrites columns of R (the B key, a new scene), call `rebuild`.
 #pragma once
 
 #include <cstdint>

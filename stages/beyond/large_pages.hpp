@@ -4,18 +4,18 @@
 // What this file does: gives the cell grid and its event calendar a
 // std::vector whose memory, once it is 2 MiB or more, is asked of the system
 // in 2 MiB pages instead of the usual 4 KiB ones; and asks for memory
-// already in use (the gas's rows of R) to be moved into such pages.
+// already in use (the gas's columns of R) to be moved into such pages.
 //
 // Why: every address a program reads is translated to a place in the
 // machine's memory, page by page, and the processor keeps only the last two
 // thousand or so translations at hand. With 4 KiB pages that covers 8 MiB;
-// the grid's books for 10^5 balls are some 12 MiB, read at random, so most
-// reads would first wait for a translation fetched from the page tables. In
-// 2 MiB pages the same books take six translations. (Measured on the
-// reference machine at N = 10^5, area fraction 0.3: 8 to 12 % less time per
-// collision. Below 2 MiB nothing changes.)
+// the grid's books and the columns of R are some 80 bytes a ball, read at
+// random, so past 10^5 balls most reads would first wait for a translation
+// fetched from the page tables. In 2 MiB pages, a few translations cover
+// them. (Measured when the books first went into large pages, at N = 10^5:
+// 8 to 12 % less time per collision. Below 2 MiB nothing changes.)
 // Beyond the article: a memory of 1989 had no pages to speak of.
-// Lesson: lessons/10-scaling.md (step 2, "Memory")
+// Lesson: lessons/11-memory.md (step 5 of beyond/cell_grid.hpp)
 //
 // Assumptions: Linux's "transparent huge pages" in the mode `madvise` or
 // `always` (Debian's default is `madvise`); where they are off, or where
@@ -77,16 +77,23 @@ using LargePageVector = std::vector<T, LargePageAllocator<T>>;
 
 // Asks the system to move memory already in use into large pages now: the
 // 2 MiB pages that lie wholly within [data, data + bytes). For an array the
-// grid reads at random places but does not own: the rows of R, in the gas
+// grid reads at random places but does not own: the columns of R, in the gas
 // (40 MB at 10^6 balls: ten thousand small pages, far more translations
-// than the processor keeps at hand). MADV_COLLAPSE moves them at once
-// (Linux 6.1 and later; an older kernel refuses it, and then at best the
-// system's own sweeper moves them later, after MADV_HUGEPAGE). Only the
-// speed depends on it.
+// than the processor keeps at hand). MADV_HUGEPAGE alone only marks memory
+// already in use for the system's sweeper, which moves it minutes later, if
+// at all; MADV_COLLAPSE moves it at once (Linux 6.1 and later; an older
+// kernel refuses it). Measured on build/gas at 10^6 balls to T = 5 (paired
+// rounds of processor time): without MADV_COLLAPSE 1.13x to 1.18x the time,
+// without either some 1.8x; at 10^5 (4 MB of columns) no difference. Only
+// the speed depends on it.
 inline void ask_large_pages(const void* data, std::size_t bytes) {
 #ifdef MADV_HUGEPAGE
+#ifdef MADV_COLLAPSE
+  constexpr int collapse = MADV_COLLAPSE;
+#else
+  constexpr int collapse = 25;  // Linux's number (glibc 2.36's <sys/mman.h> lacks it)
+#endif
   constexpr std::size_t large_page = std::size_t{1} << 21;
-  constexpr int collapse = 25;  // MADV_COLLAPSE (Linux's number; glibc 2.36 lacks it)
   const auto from = reinterpret_cast<std::uintptr_t>(data);
   const std::uintptr_t start = (from + large_page - 1) / large_page * large_page;
   const std::uintptr_t end = (from + bytes) / large_page * large_page;

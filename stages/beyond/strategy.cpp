@@ -1,8 +1,9 @@
-// Stage 4 — the three ways to find the first collision. See beyond/strategy.hpp.
+// Stage 4 — the ways to find the first collision. See beyond/strategy.hpp.
 #include "beyond/strategy.hpp"
 
 #include "beyond/cell_grid.hpp"
 #include "beyond/event_table.hpp"
+#include "beyond/plain_grid.hpp"
 
 namespace gas {
 
@@ -12,6 +13,8 @@ const char* strategy_name(Strategy strategy) {
       return "scan";
     case Strategy::table:
       return "table";
+    case Strategy::plain_grid:
+      return "plain-grid";
     case Strategy::grid:
       return "grid";
   }
@@ -19,7 +22,8 @@ const char* strategy_name(Strategy strategy) {
 }
 
 std::optional<Strategy> strategy_named(std::string_view name) {
-  for (const Strategy strategy : {Strategy::scan, Strategy::table, Strategy::grid}) {
+  for (const Strategy strategy :
+       {Strategy::scan, Strategy::table, Strategy::plain_grid, Strategy::grid}) {
     if (name == strategy_name(strategy)) return strategy;
   }
   return std::nullopt;
@@ -31,6 +35,8 @@ std::unique_ptr<FirstCollisionFinder> make_finder(Strategy strategy) {
       return std::make_unique<ArticleScan>();
     case Strategy::table:
       return std::make_unique<EventTable>();
+    case Strategy::plain_grid:
+      return std::make_unique<PlainGrid>();
     case Strategy::grid:
       return std::make_unique<CellGrid>();
   }

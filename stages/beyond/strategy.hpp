@@ -1,18 +1,19 @@
-// Stage 4 — first collision: the three ways to find it, and which to use.
+// Stage 4 — first collision: the ways to find it, and which to use.
 //
-// What this file does: names the three ways — the article's scan
-// (stage4_first_collision.*), the table of next events (beyond/event_table.*)
-// and the cell grid (beyond/cell_grid.*), each a FirstCollisionFinder, stage
-// 4's small interface — picks one for a scene by its number of balls, and
-// makes it for stage 7.
-// Beyond the article: the article has only the scan. All three give the same
+// What this file does: names the ways — the article's scan
+// (stage4_first_collision.*), the table of next events (beyond/event_table.*),
+// the plain cell grid (beyond/plain_grid.*) and the tuned one
+// (beyond/cell_grid.*), each a FirstCollisionFinder, stage 4's small
+// interface — picks one for a scene by its number of balls, and makes it for
+// stage 7.
+// Beyond the article: the article has only the scan. All give the same
 // TC, K, N1, N2, bit for bit, ties included (suite `strategies`); they differ
 // only in how long they take (data/reports/speed-against-error.md).
 // Lesson: lessons/10-scaling.md
 //
-// Assumptions: as for the table and the grid — between two calls of `first`
+// Assumptions: as for the table and the grids — between two calls of `first`
 // the gas changes only by the collision passed to `update`; anything else
-// that rewrites rows of R asks for `rebuild`.
+// that rewrites columns of R asks for `rebuild`.
 #pragma once
 
 #include <cstddef>
@@ -29,16 +30,17 @@ namespace gas {
 
 // The ways to do stage 4.
 enum class Strategy {
-  scan,   // the article's: every wall and every pair, for each collision
-  table,  // a table of each ball's next event; after a collision only its balls
-  grid,   // cells at least 2a wide, a queue of events, cell crossings
+  scan,        // the article's: every wall and every pair, for each collision
+  table,       // a table of each ball's next event; after a collision only its balls
+  plain_grid,  // cells at least 2a wide, a calendar of events, cell crossings
+  grid,        // the same, tuned: measured steps that save instructions and waits
 };
 
 // The way stage 4 is done for a scene of `ball_count` balls. A handful keeps
 // the article's scan, so that `--trace` on the teaching scenes follows the
 // article (for so few balls any way takes well under a microsecond a
 // collision); then the table, while it is the fastest for a sparse gas; then
-// the grid. The crossovers, measured by gas-benchmark, are in
+// the tuned grid. The crossovers, measured by gas-benchmark, are in
 // data/reports/speed-against-error.md (section 1).
 // [anchor: strategy-for]
 inline constexpr std::size_t most_balls_for_scan = 8;
@@ -50,7 +52,8 @@ inline Strategy strategy_for(std::size_t ball_count) {
 }
 // [/anchor: strategy-for]
 
-// "scan", "table", "grid"; and back (nothing for any other name).
+// "scan", "table", "plain-grid", "grid"; and back (nothing for any other
+// name).
 const char* strategy_name(Strategy strategy);
 std::optional<Strategy> strategy_named(std::string_view name);
 

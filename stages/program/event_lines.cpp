@@ -62,28 +62,23 @@ int digit_count(std::uint64_t value) {
   }
 }
 
-// Room after a number's digits that write_digits may fill with characters
-// that mean nothing (what comes next in the line writes over them).
+// Room after a number's digits that write_digits fills with characters
+// that mean nothing (what comes next in the line writes over them; see
+// longest_event_line).
 constexpr int digits_spill = 24;
 
 // Writes the `count` decimal digits of `value` (any 64-bit value: below
 // 10^20) at `out`; returns their end. The digits are made eight at a time
 // in a block, then copied to `out` in one copy of a fixed size (no loop, no
-// call), which may write up to digits_spill characters of no meaning after
-// them.
+// call), which writes digits_spill characters, the digits first.
 char* write_digits(char* out, std::uint64_t value, int count) {
   constexpr std::uint64_t eight = 100000000;
   char block[2 * digits_spill];  // the digits end at digits_spill
   put_eight(block + 16, eight_digits(static_cast<std::uint32_t>(value % eight)));
-  if (count > 8) {
+  if (count > 8)
     put_eight(block + 8, eight_digits(static_cast<std::uint32_t>(value / eight % eight)));
-    const std::uint64_t top = value / eight / eight;  // the digits before 16
-    if (top >= 10) {
-      put_eight(block, eight_digits(static_cast<std::uint32_t>(top)));
-    } else if (count > 16) {  // 17 digits, as half the moments have
-      block[7] = static_cast<char>('0' + top);
-    }
-  }
+  if (count > 16)
+    put_eight(block, eight_digits(static_cast<std::uint32_t>(value / eight / eight)));
   std::memcpy(out, block + digits_spill - count, digits_spill);
   return out + count;
 }
@@ -126,12 +121,22 @@ char* write_integer(char* out, int value) {
   return write_digits(out, magnitude, digit_count(magnitude));
 }
 
+// fmt's own shortest digits (Dragonbox) for the versions of fmt tried; the
+// public format_to for any other (the same text, some 300 instructions a
+// line more).
+#if FMT_VERSION >= 90100 && FMT_VERSION < 130000
+#define GAS_EVENT_LINES_DRAGONBOX 1
+#else
+#define GAS_EVENT_LINES_DRAGONBOX 0
+#endif
+
 // A moment TC as "{}" writes it: the shortest digits that read back to the
 // same double (fmt's own Dragonbox, so the very digits fmt picks), laid out
 // as fmt lays them out for a decimal exponent from -4 up to 15 (every
 // moment of a run from 1e-4 on, before 1e16). Anything else (0, the
 // exponent form, a sign, not a number) is left to fmt itself.
 char* write_time(char* out, double time) {
+#if GAS_EVENT_LINES_DRAGONBOX
   if (!(time > 0 && time <= std::numeric_limits<double>::max()))
     return fmt::format_to(out, FMT_COMPILE("{}"), time);
   const auto decimal = fmt::detail::dragonbox::to_decimal(time);
@@ -140,28 +145,26 @@ char* write_time(char* out, double time) {
   const int leading = exponent + count;  // digits before the point (fmt: exp)
   if (leading - 1 < -4 || leading - 1 >= 16)
     return fmt::format_to(out, FMT_COMPILE("{}"), time);
-  // Where the digits go: at once (1234e2 -> 123400, 1234e-2 -> 12.34), or
-  // after "0." and the zeros (1234e-6 -> 0.001234).
-  char* const digits = leading > 0 ? out : out + 2 - leading;
-  if (leading <= 0) {
-    out[0] = '0';
-    out[1] = '.';
-    std::memset(out + 2, '0', 4);  // (at most 4 are needed: the line has room)
+  if (exponent >= 0) {  // 1234e2 -> 123400
+    out = write_digits(out, decimal.significand, count);
+    std::memset(out, '0', 15);  // (at most 15 are needed: leading is at most 16)
+    return out + exponent;
   }
-  char* const end = write_digits(digits, decimal.significand, count);
-  if (exponent >= 0) {          // 1234e2 -> 123400
-    std::memset(end, '0', 16);  // (at most 15 are needed: the line has room)
-    return end + exponent;
+  if (leading > 0) {  // 1234e-2 -> 12.34: the digits one place on, the
+                      // leading ones moved back before the point
+    char* const end = write_digits(out + 1, decimal.significand, count);
+    for (int i = 0; i < leading; ++i) out[i] = out[i + 1];
+    out[leading] = '.';
+    return end;
   }
-  if (leading > 0) {  // 1234e-2 -> 12.34: the digits after the point moved
-                      // one place on (a copy of a fixed size: room again)
-    char moved[digits_spill];
-    std::memcpy(moved, digits + leading, digits_spill);
-    digits[leading] = '.';
-    std::memcpy(digits + leading + 1, moved, digits_spill);
-    return end + 1;
-  }
-  return end;
+  // 1234e-6 -> 0.001234
+  *out++ = '0';
+  *out++ = '.';
+  std::memset(out, '0', 3);  // (at most 3 are needed: leading is at least -3)
+  return write_digits(out - leading, decimal.significand, count);
+#else
+  return fmt::format_to(out, FMT_COMPILE("{}"), time);
+#endif
 }
 
 }  // namespace
@@ -169,12 +172,7 @@ char* write_time(char* out, double time) {
 char* write_event_line(char* out, const Collision& c) {
   out = write_time(out, c.time);
   *out++ = ',';
-  const int kind = static_cast<int>(c.kind);  // K: one digit
-  if (kind >= 0 && kind <= 9) {
-    *out++ = static_cast<char>('0' + kind);
-  } else {
-    out = write_integer(out, kind);
-  }
+  out = write_integer(out, static_cast<int>(c.kind));
   *out++ = ',';
   out = write_integer(out, c.first);
   *out++ = ',';

@@ -6,9 +6,18 @@
 // line's text is exactly fmt's "{},{},{},{}" of (TC, K, N1, N2): T in the
 // fewest digits that read back to the same double (shortest round-trip), laid
 // out as fmt lays out "{}" (fixed from 1e-4 up to below 1e16, else with an
-// exponent). A line costs about a third of what fmt's compiled format did,
-// which made --events a fifth of a collision at N = 10^3 (issue 22).
-// Lesson: lessons/7-model-control.md; the format: README.md ("The program").
+// exponent). A line costs some 470 instructions where fmt's compiled
+// format of the whole line takes some 600, and fmt's "{}" for T with this
+// file's integers some 590 (callgrind, data/large-1000.scene to T = 200,
+// fmt 9.1): at N = 10^3, where a collision is some 2830 instructions,
+// --events adds a sixth of a collision instead of a fifth.
+// Lesson: lessons/11-memory.md ("The line of --events"); the format:
+// README.md ("The program").
+//
+// Assumptions: fmt's shortest digits are taken from fmt's own Dragonbox
+// (fmt::detail, not fmt's public API) only for the versions of fmt this was
+// built and checked with, 9.1 to 12.1 (CMakeLists.txt); with any other,
+// fmt's public format_to writes the same text, more slowly.
 #pragma once
 
 #include <cstddef>
@@ -17,10 +26,13 @@
 
 namespace gas {
 
-// The room one line needs: T takes at most 24 characters, the three
-// integers at most 11 each, with three commas and the newline (62); the
-// writing may put up to 24 characters of no meaning after a number's
-// digits, which the next field or line writes over.
+// The room one line needs. The line itself is at most 61 characters: T at
+// most 24, the three integers at most 11 each, three commas and the
+// newline. But a number's digits are placed by a copy of a fixed size (24
+// characters, however many digits it has: no loop), whose characters past
+// the digits mean nothing and are written over by what follows. N2, the
+// last number, starts at most 49 characters in (after its sign), so the
+// writing reaches at most 74; the room asked for is 96.
 inline constexpr std::size_t longest_event_line = 96;
 
 // Writes collision `c`'s line, newline included, at `out`, which has room

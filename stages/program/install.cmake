@@ -1,4 +1,4 @@
-# Installing `gas` like any Unix program (issue 25), included by
+# Installing `gas` like any Unix program, included by
 # CMakeLists.txt:
 #   cmake --install build [--prefix P]   bin/gas, the teaching scenes in
 #       share/gas-on-the-display/ (with data/README.md, the scene format),

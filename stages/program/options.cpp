@@ -190,7 +190,8 @@ void read_strategy(ArgumentReader& reader, Options& options) {
   const std::string name = reader.value();
   options.strategy = strategy_named(name);
   if (!options.strategy)
-    throw UsageError(fmt::format("--strategy takes scan, table or grid, not '{}'", name));
+    throw UsageError(
+        fmt::format("--strategy takes scan, table, plain-grid or grid, not '{}'", name));
 }
 
 // --pictures P: where pictures are taken.
@@ -277,6 +278,31 @@ Options parse_options(const std::vector<std::string>& arguments) {
   return options;
 }
 
+namespace {
+
+// The end of --help: the keys, the terminal and the exit status.
+std::string keys_text() {
+  return R"(keys (in a terminal, without Enter, in either case): S stop, R run, B reverse
+  all velocities and run on (a stopped model too), > double T0, < halve T0,
+  0 redraw the screen, E end; beyond the article, A restarts the averages of
+  the statistics (--mode stats, --csv). A line under the table lists them.
+In a terminal, a resized window gets the screen prepared again at its size
+(--cols and --rows keep theirs, cut to the window); a window too small for
+the table says so until it grows.
+When the output is not a terminal, or TERM is dumb, every frame is printed
+whole, headed by a status line, with no escape sequence; with no --frames or
+--until a run into a file or a pipe stops after 100 frames (or as many as
+--keys has keys, if more), and ticks in which the model stands stopped are
+marked by one status line, ending [stopped N ticks].
+Ctrl-C, SIGTERM and SIGHUP end the run as E does: files whole, the dump written.
+Exit status: 0 success, 2 bad usage or bad scene, 1 any other failure (a file
+that cannot be written, say); after a signal 128 + its number (130 for Ctrl-C,
+143 for SIGTERM, 129 for SIGHUP).
+)";
+}
+
+}  // namespace
+
 std::string help_text() {
   return R"(gas - the billiard-ball gas of "Gas on the display" (1989), in a terminal
 
@@ -284,7 +310,7 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
            [--mode balls|trails|stats|none] [--events FILE] [--dump FILE]
            [--csv FILE] [--structure FILE] [--vacf FILE]
            [--cols N] [--rows N] [--step] [--trace] [--bell]
-           [--strategy scan|table|grid] [--pictures collisions|steps]
+           [--strategy scan|table|plain-grid|grid] [--pictures collisions|steps]
        gas --help | --version
 
   SCENE            a scene file (format: data/README.md or `man gas`), or a
@@ -326,8 +352,9 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
                    a collision
   --bell           ring the terminal bell on collisions
   --strategy S     how stage 4 finds the first collision: scan (the article's),
-                   table (each ball's next event) or grid (cells and an event
-                   queue); the same collisions, at different speeds. Default:
+                   table (each ball's next event), plain-grid (cells and an
+                   event calendar) or grid (the same, tuned); the same
+                   collisions, at different speeds. Default:
                    scan up to )" +
          std::to_string(most_balls_for_scan) + R"( balls, table up to )" +
          std::to_string(most_balls_for_table) + R"(, grid beyond
@@ -343,23 +370,7 @@ usage: gas [SCENE] [--frames N | --until T] [--keys KEYS]
                    built from
 An option given twice is refused.
 
-keys (in a terminal, without Enter, in either case): S stop, R run, B reverse
-  all velocities and run on (a stopped model too), > double T0, < halve T0,
-  0 redraw the screen, E end; beyond the article, A restarts the averages of
-  the statistics (--mode stats, --csv). A line under the table lists them.
-In a terminal, a resized window gets the screen prepared again at its size
-(--cols and --rows keep theirs, cut to the window); a window too small for
-the table says so until it grows.
-When the output is not a terminal, or TERM is dumb, every frame is printed
-whole, headed by a status line, with no escape sequence; with no --frames or
---until a run into a file or a pipe stops after 100 frames (or as many as
---keys has keys, if more), and ticks in which the model stands stopped are
-marked by one status line, ending [stopped N ticks].
-Ctrl-C, SIGTERM and SIGHUP end the run as E does: files whole, the dump written.
-Exit status: 0 success, 2 bad usage or bad scene, 1 any other failure (a file
-that cannot be written, say); after a signal 128 + its number (130 for Ctrl-C,
-143 for SIGTERM, 129 for SIGHUP).
-)";
+)" + keys_text();
 }
 
 }  // namespace gas

@@ -124,7 +124,7 @@ RunOutputs::RunOutputs(const Options& options, Display& display)
 }
 
 // --events: its lines are written to the file in blocks (and at the end),
-// of 64 kB at first, so that the first lines of a slow run soon show, then
+// the first of 64 kB, so that the first lines of a slow run soon show, then
 // twice as large each time up to 1 MB: a system call a block, not one every
 // 4 kB (the kernel's work then took some 5 % of a run at N = 10^3, against 2
 // to 3 %).

@@ -1,8 +1,8 @@
 // `gas --version`: the program's name, its version and the commit it is
 // built from.
 //
-// Not one of the article's stages: the conventions of a command-line program
-// (issue 25). The version is CMake's project(... VERSION ...); the commit
+// Not one of the article's stages: the conventions of a command-line
+// program. The version is CMake's project(... VERSION ...); the commit
 // is asked of git at every build (version_info.cmake).
 // Lesson: lessons/7-model-control.md (the command line); the reference:
 // README.md ("Installing") and `man gas`.

@@ -2,7 +2,7 @@
 # project's version and the git commit it is built from. Run by CMake at
 # every build (CMakeLists.txt, target gas_version_info) as
 #   cmake -DSOURCE_DIR=... -DVERSION=... -DOUTPUT=... -P version_info.cmake
-# Not one of the article's stages: the program's packaging (issue 25).
+# Not one of the article's stages: the program's packaging.
 #
 # The commit is `git describe --always --dirty` of SOURCE_DIR when it is a
 # checkout (it has its own .git: a tarball unpacked inside some other

@@ -124,28 +124,37 @@ bool on_path(const std::string& name) {
   return false;
 }
 
-ChildRun run_child(const std::string& program, const std::vector<std::string>& arguments,
-                   const std::string& input, double time_limit) {
-  ChildRun run;
-  const IgnoreBrokenPipes ignore_broken_pipes;
-  Descriptor input_read, input_write, output_read, output_write, error_read, error_write;
-  if (!make_pipe(output_read, output_write) || !make_pipe(error_read, error_write) ||
-      (!input.empty() && !make_pipe(input_read, input_write))) {
-    run.error = fmt::format("cannot make a pipe: {}", std::strerror(errno));
-    return run;
-  }
+namespace {
 
+// The child's three standard streams, as this process sees them: the write
+// end of its input (closed at once if there is no input), the read ends of
+// its output and error.
+struct Streams {
+  Descriptor input, output, error;
+};
+
+// Starts `program` with its standard streams on pipes (its input on
+// /dev/null if `input` is empty) and every signal at its default, none
+// blocked, whatever the benchmark ignores (SIGPIPE). Returns its process id,
+// or 0 with `run.error` saying why not.
+pid_t spawn(const std::string& program, const std::vector<std::string>& arguments,
+            bool with_input, Streams& streams, ChildRun& run) {
+  Descriptor input_read, output_write, error_write;
+  if (!make_pipe(streams.output, output_write) ||
+      !make_pipe(streams.error, error_write) ||
+      (with_input && !make_pipe(input_read, streams.input))) {
+    run.error = fmt::format("cannot make a pipe: {}", std::strerror(errno));
+    return 0;
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  if (input.empty()) {
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  } else {
+  if (with_input) {
     posix_spawn_file_actions_adddup2(&actions, input_read.get(), 0);
+  } else {
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   }
   posix_spawn_file_actions_adddup2(&actions, output_write.get(), 1);
   posix_spawn_file_actions_adddup2(&actions, error_write.get(), 2);
-  // The child starts with every signal at its default and none blocked,
-  // whatever the benchmark ignores (SIGPIPE, above).
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   sigset_t all, none;
@@ -154,14 +163,11 @@ ChildRun run_child(const std::string& program, const std::vector<std::string>& a
   posix_spawnattr_setsigdefault(&attributes, &all);
   posix_spawnattr_setsigmask(&attributes, &none);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-
   std::vector<char*> argv;
   argv.push_back(const_cast<char*>(program.c_str()));
   for (const std::string& argument : arguments)
     argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
-
-  const Clock::time_point began = Clock::now();
   pid_t child = 0;
   const int spawned =
       posix_spawnp(&child, program.c_str(), &actions, &attributes, argv.data(), environ);
@@ -169,50 +175,49 @@ ChildRun run_child(const std::string& program, const std::vector<std::string>& a
   posix_spawnattr_destroy(&attributes);
   if (spawned != 0) {
     run.error = fmt::format("{}: {}", program, std::strerror(spawned));
-    return run;
+    return 0;
   }
   run.started = true;
-  // The child's ends are the child's now.
-  input_read.close();
-  output_write.close();
-  error_write.close();
+  if (streams.input.open()) fcntl(streams.input.get(), F_SETFL, O_NONBLOCK);
+  return child;  // (its ends of the pipes close here: they are the child's now)
+}
 
-  if (input_write.open()) fcntl(input_write.get(), F_SETFL, O_NONBLOCK);
+// Feeds the child its input and reads its output (counted) and error (the
+// first kilobytes kept) until both end, or until the deadline (then it is
+// killed); meanwhile its largest resident memory is read every 20 ms.
+void talk(pid_t child, const std::string& input, Streams& streams,
+          Clock::time_point deadline, ChildRun& run) {
   std::size_t written = 0;
-  if (input.empty()) input_write.close();
-  const Clock::time_point deadline =
-      began + std::chrono::duration_cast<Clock::duration>(
-                  std::chrono::duration<double>(time_limit));
   char buffer[1 << 16];
-  while (output_read.open() || error_read.open()) {
+  while (streams.output.open() || streams.error.open()) {
     const Clock::time_point now = Clock::now();
     if (now >= deadline) {
       kill(child, SIGKILL);
       run.timed_out = true;
-      break;
+      return;
     }
     pollfd watched[3];
-    nfds_t count = 0;
     Descriptor* owners[3];
-    for (Descriptor* d : {&output_read, &error_read}) {
+    nfds_t count = 0;
+    for (Descriptor* d : {&streams.output, &streams.error}) {
       if (!d->open()) continue;
       watched[count] = {d->get(), POLLIN, 0};
       owners[count++] = d;
     }
-    if (input_write.open()) {
-      watched[count] = {input_write.get(), POLLOUT, 0};
-      owners[count++] = &input_write;
+    if (streams.input.open()) {
+      watched[count] = {streams.input.get(), POLLOUT, 0};
+      owners[count++] = &streams.input;
     }
     const auto wait_ms =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
     const int ready = poll(
         watched, count, static_cast<int>(std::min<long long>(wait_ms.count() + 1, 20)));
-    if (ready < 0 && errno != EINTR) break;
+    if (ready < 0 && errno != EINTR) return;
     run.max_rss_kb = std::max(run.max_rss_kb, resident_peak_kb(child));
     for (nfds_t i = 0; i < count; ++i) {
       if (watched[i].revents == 0) continue;
       Descriptor& d = *owners[i];
-      if (&d == &input_write) {
+      if (&d == &streams.input) {
         const ssize_t n = write(d.get(), input.data() + written, input.size() - written);
         if (n > 0) written += static_cast<std::size_t>(n);
         if ((n < 0 && errno != EAGAIN) || written == input.size()) d.close();
@@ -221,9 +226,7 @@ ChildRun run_child(const std::string& program, const std::vector<std::string>& a
       const ssize_t n = read(d.get(), buffer, sizeof buffer);
       if (n <= 0) {
         if (n == 0 || (errno != EINTR && errno != EAGAIN)) d.close();
-        continue;
-      }
-      if (&d == &output_read) {
+      } else if (&d == &streams.output) {
         run.output_bytes += n;
       } else if (run.error.size() < kept_error_bytes) {
         run.error.append(buffer,
@@ -232,11 +235,12 @@ ChildRun run_child(const std::string& program, const std::vector<std::string>& a
       }
     }
   }
-  input_write.close();
-  output_read.close();
-  error_read.close();
+}
 
-  // Its exit (it may have closed its output before exiting).
+// Waits for the child's exit (it may have closed its output before
+// exiting), killing it at the deadline; its status and processor time.
+void await_exit(pid_t child, const std::string& program, Clock::time_point deadline,
+                ChildRun& run) {
   int status = 0;
   rusage usage{};
   while (true) {
@@ -244,7 +248,7 @@ ChildRun run_child(const std::string& program, const std::vector<std::string>& a
     if (done == child) break;
     if (done < 0 && errno != EINTR) {
       run.error = fmt::format("waiting for {}: {}", program, std::strerror(errno));
-      return run;
+      return;
     }
     if (Clock::now() >= deadline) {
       kill(child, SIGKILL);
@@ -253,12 +257,32 @@ ChildRun run_child(const std::string& program, const std::vector<std::string>& a
       std::this_thread::sleep_for(std::chrono::microseconds(100));
     }
   }
-  run.wall_seconds = seconds_between(began, Clock::now());
   run.cpu_seconds =
       static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
       1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   if (WIFEXITED(status)) run.exit_status = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) run.signal = WTERMSIG(status);
+}
+
+}  // namespace
+
+ChildRun run_child(const std::string& program, const std::vector<std::string>& arguments,
+                   const std::string& input, double time_limit) {
+  ChildRun run;
+  const IgnoreBrokenPipes ignore_broken_pipes;
+  Streams streams;
+  const Clock::time_point began = Clock::now();
+  const pid_t child = spawn(program, arguments, !input.empty(), streams, run);
+  if (child == 0) return run;
+  const Clock::time_point deadline =
+      began + std::chrono::duration_cast<Clock::duration>(
+                  std::chrono::duration<double>(time_limit));
+  talk(child, input, streams, deadline, run);
+  streams.input.close();
+  streams.output.close();
+  streams.error.close();
+  await_exit(child, program, deadline, run);
+  run.wall_seconds = seconds_between(began, Clock::now());
   return run;
 }
 

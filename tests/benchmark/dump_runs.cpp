@@ -1,4 +1,4 @@
-// Section 7 of the report: a --dump written and read back. See dump_runs.hpp.
+// Section 8 of the report: a --dump written and read back. See dump_runs.hpp.
 #include "dump_runs.hpp"
 
 #include <fmt/format.h>
@@ -114,7 +114,7 @@ DumpFigures measure_dumps(const DumpSettings& settings) {
       DumpRow& row = figures.rows[k];
       const fs::path& scene = settings.scenes[k];
       const fs::path dump = settings.scratch / fmt::format("dump-{}.scene", row.balls);
-      progress("7/7 round {} of {}: {} balls", round, settings.rounds, row.balls);
+      progress("8/8 round {} of {}: {} balls", round, settings.rounds, row.balls);
       row.plain.push_back(
           time_gas(settings, {scene.string(), "--until", until, "--mode", "none"}, row));
       row.dumping.push_back(time_gas(
@@ -136,7 +136,7 @@ DumpFigures measure_dumps(const DumpSettings& settings) {
 }
 
 std::string dump_section(const DumpSettings& settings, const DumpFigures& figures) {
-  std::string text = "## 7. Checkpoints: a dump written and read back\n\n";
+  std::string text = "## 8. Checkpoints: a dump written and read back\n\n";
   text += fmt::format(
       "`build/gas` as a process, its processor time (user + system), the median of {} "
       "round{} of three runs interleaved: (p) `build/gas SCENE --until {:g} --mode "

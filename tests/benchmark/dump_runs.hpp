@@ -1,4 +1,4 @@
-// Section 7 of the report: checkpoints, a --dump written and read back, at
+// Section 8 of the report: checkpoints, a --dump written and read back, at
 // 10^3 to 10^6 balls.
 //
 // `build/gas` is timed as a process on its processor time (user + system,

@@ -17,7 +17,8 @@
 // the median of the rounds. Beside them: `build/gas` with --events (what
 // writing every collision costs), with --mode stats --csv at 10^6 (what the
 // statistics cost there), and the memory per ball (the largest resident
-// memory, VmHWM, against N).
+// memory, VmHWM, against N). And in the same rounds, for section 7, build/gas
+// with the plain grid (--strategy plain-grid) beside the tuned one.
 #pragma once
 
 #include <filesystem>
@@ -60,6 +61,7 @@ struct PeerRow {
   long long collisions = 0;              // ball collisions of build/gas's long run,
   long long short_collisions = 0;        //   and of its short run (by the engine)
   RatePairs plain, events, stats, peer;  // --mode none; + --events; stats + --csv; peer
+  RatePairs plain_grid;                  // --mode none --strategy plain-grid (section 7)
 };
 
 struct PeerFigures {
@@ -74,6 +76,11 @@ PeerFigures measure_peer(const PeerSettings& settings);
 // The section's text, from its heading on; and its rows of the Targets table.
 std::string peer_section(const PeerSettings& settings, const PeerFigures& figures);
 std::string peer_targets(const PeerFigures& figures);
+
+// Bytes per ball of a way of running: the growth of the largest resident
+// memory from the smallest scene to `row`, per ball added (0 for the first).
+double bytes_per_ball(const PeerFigures& figures, const PeerRow& row,
+                      RatePairs PeerRow::*way = &PeerRow::plain);
 
 // Every rate measured, one row a round (data/reports/peer.csv).
 void write_peer_csv(const std::filesystem::path& path, const PeerFigures& figures);

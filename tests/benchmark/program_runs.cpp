@@ -245,10 +245,11 @@ ProgramFigures measure_program(const ProgramSettings& settings) {
   return figures;
 }
 
-std::string program_section(const ProgramSettings& settings,
-                            const ProgramFigures& figures) {
-  std::string text = "## 5. The program as users run it\n\n";
-  text += fmt::format(
+namespace {
+
+// The section's opening: what is run, and how it is timed.
+std::string program_intro(const ProgramSettings& settings) {
+  return fmt::format(
       "Sections 1 to 4 time the stages inside this benchmark. Here the benchmark runs "
       "`build/gas` itself, the program users type, as a child process (`posix_spawn`, "
       "`tests/benchmark/child_process.cpp`): end to end — starting, reading the scene "
@@ -276,7 +277,12 @@ std::string program_section(const ProgramSettings& settings,
                         "slows a run down); (c) once",
                         settings.rounds)
           : std::string("Each runs once"));
-  text +=
+}
+
+// The table: the engine, then each run, on each scene; and notes on how a
+// run's collisions were counted.
+std::string program_table(const ProgramFigures& figures) {
+  std::string text =
       "| scene | N | run | T | collisions | wall time | its processor time | output | "
       "collisions/s | × engine | in processor time "
       "|\n|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -322,8 +328,12 @@ std::string program_section(const ProgramSettings& settings,
   text += "\n";
   for (const std::string& note : notes) text += fmt::format("- Run {}\n", note);
   if (!notes.empty()) text += "\n";
+  return text;
+}
 
-  // What the program adds to the engine, for each scene where (a) ran.
+// What the program adds to the engine, for each scene where (a) ran.
+std::string program_costs(const ProgramFigures& figures) {
+  std::string text;
   for (const EngineOnScene& engine : figures.engines) {
     const ProgramRun* none = figures.run(engine.scene, 'a');
     const ProgramRun* stats = figures.run(engine.scene, 'b');
@@ -344,8 +354,16 @@ std::string program_section(const ProgramSettings& settings,
           100 * (stats->child.cpu_seconds / none->child.cpu_seconds - 1));
     text += "\n\n";
   }
-  text += "The picture of section 1 sets these runs beside each way of stage 4.\n\n";
   return text;
+}
+
+}  // namespace
+
+std::string program_section(const ProgramSettings& settings,
+                            const ProgramFigures& figures) {
+  return "## 5. The program as users run it\n\n" + program_intro(settings) +
+         program_table(figures) + program_costs(figures) +
+         "The picture of section 1 sets these runs beside each way of stage 4.\n\n";
 }
 
 std::string program_targets(const ProgramSettings& settings,
@@ -357,7 +375,8 @@ std::string program_targets(const ProgramSettings& settings,
        {std::tuple{
             'a', 0.8,
             fmt::format("`build/gas {} --until {:g} --mode none`: at least 0.8x "
-                        "the engine's collisions per second measured in the same run",
+                        "the engine's collisions per processor second measured in the "
+                        "same run",
                         scene.name, scene.until)},
         std::tuple{
             'b', 0.5,
@@ -374,13 +393,15 @@ std::string program_targets(const ProgramSettings& settings,
     } else if (run->per_second() <= 0) {
       measured = fmt::format("not measured: collisions not known ({})", run->count_note);
     } else {
-      const double ratio = run->per_second() / engine->per_second();
-      const double to_t = static_cast<double>(engine->collisions) / engine->wall_seconds;
+      // Judged on the run's processor time, as the engine's figure is: the
+      // wall clock of a shared machine also counts the other programs' turns.
+      const double ratio = run->per_processor_second() / engine->per_second();
+      const double to_t = static_cast<double>(engine->collisions) / engine->cpu_seconds;
       measured = fmt::format(
-          "{} collisions/s, {:.2f}x the engine's {} ({:.2f}x in processor time; "
-          "{:.2f}x the engine's own run from the scene file to T; section 5)",
-          count_text(run->per_second()), ratio, count_text(engine->per_second()),
-          run->per_processor_second() / engine->per_second(), run->per_second() / to_t);
+          "{:.2f}x the engine's {} collisions/s in processor time ({:.2f}x on the wall "
+          "clock; {:.2f}x the engine's own run from the scene file to T; section 5)",
+          ratio, count_text(engine->per_second()),
+          run->per_second() / engine->per_second(), run->per_processor_second() / to_t);
       met = ratio >= least;
     }
     rows += fmt::format("| {} | {} | {} |\n", what, measured, yes_no(met));

@@ -16,6 +16,12 @@
 
 #include <ctime>
 
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "report_common.hpp"
 #include "stage1_data.hpp"
 
 namespace gas::benchmark {
@@ -42,5 +48,21 @@ struct GasRecord {
 
 // Runs `start` with the time step `dt` until model time `end`.
 GasRecord run_time_stepped(const Gas& start, double dt, double end);
+
+// Section 4 of the report: the event-driven stages and the fixed time step
+// on the same gas. The event-driven run carries, beside its record, the
+// spread of its figures between ten equal stretches of its time (how much a
+// run this long is worth statistically).
+struct TimeStepFigures {
+  Gas gas;                      // the start of every run
+  GasRecord events;             // the stages, event-driven
+  double collision_spread = 0;  // relative standard error of its collision count
+  double impulse_spread = 0;    // ... of its wall impulse
+  std::vector<std::pair<double, GasRecord>> stepped;  // dt in diameters, the run
+};
+
+// Measures, writing time-stepping.csv into `out`; the section's text.
+TimeStepFigures measure_time_steps(const Sizes& sizes, const std::filesystem::path& out);
+std::string time_steps_section(const Sizes& sizes, const TimeStepFigures& figures);
 
 }  // namespace gas::benchmark
