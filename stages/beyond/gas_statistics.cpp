@@ -9,7 +9,6 @@
 
 #include "beyond/boltzmann_h.hpp"
 #include "beyond/fluid_structure.hpp"
-#include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
 
 namespace gas {
@@ -93,6 +92,7 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   for (std::size_t i = 0; i < balls_; ++i) speed_enters(i, gas.balls[i], gas.time);
   // A sample for the error bars every N collisions: about two a ball.
   collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_));
+  heat_time_ = table_heat_time(gas);
   // The warm-up, in collisions of two balls: each counts for two balls.
   warm_up_per_ball_ = warm_up ? warm_up_collisions_a_ball(gas) : 0;
   warm_up_until_ = (warm_up_per_ball_ * static_cast<long long>(balls_) + 1) / 2;
@@ -262,9 +262,18 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
   sample_start_ = now;
   sample_collisions_ = 0;
   if (!(sample.duration > 0)) return;
+  // The batches of the quantities that follow the table's heat: at least
+  // its heat time long, in samples of the mean length so far.
+  const auto samples = static_cast<double>(blocking_[mean_speed_q].count() + 1);
+  const double batch =
+      std::isfinite(heat_time_) ? heat_time_ / (now.duration / samples) : 1;
+  const auto shortest = static_cast<std::size_t>(std::max(1.0, std::ceil(batch)));
   for (int q = 0; q < quantity_count; ++q) {
+    BlockingAnalysis& blocking = blocking_[static_cast<std::size_t>(q)];
+    if (follows_table_heat(static_cast<Quantity>(q)))
+      blocking.set_shortest_batch(shortest);
     const double value = value_of(static_cast<Quantity>(q), sample);
-    if (std::isfinite(value)) blocking_[static_cast<std::size_t>(q)].add(value);
+    if (std::isfinite(value)) blocking.add(value);
   }
 }
 // [/anchor: collision-sums]
@@ -332,8 +341,9 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return 1 + s.virial / (2 * t * n * kT_);
     case bulk_z_q:  // the same for the interior, N_int t = its ball-time
       return bulk_z;
-    case bulk_z_minus_theory_q:  // against the reference at this stretch's eta
-      return bulk_z - hard_disc_fluid_compressibility(eta);
+    case bulk_z_minus_theory_q:  // against the reference at this stretch's eta,
+                                 // for a closed box of N balls
+      return bulk_z - fixed_count_compressibility(eta, balls_);
     case interior_eta_q:  // n_int pi a^2
       return eta;
     case interior_kT_q:
@@ -343,16 +353,18 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
     case collision_rate_q:
       return rate;
     case collision_rate_minus_theory_q:
-      return rate - enskog_collision_rate(eta, radius_, kT_inside);
+      return rate - enskog_collision_rate(eta, radius_, kT_inside) *
+                        fixed_count_rate_factor(eta, balls_);
     case mean_free_path_q:  // the interior's mean speed over its rate
       return s.interior_speed / s.interior_time / rate;
     case wall_middle_pressure_q:
       return s.push_x_middle / t;
-    case pressure_minus_theory_q: {  // against the bulk's P = Z_ref n kT in
-      // front of the middles, at this stretch's eta and kT there
-      return s.push_x_middle / t -
-             hard_disc_fluid_pressure(value_of(beside_walls_eta_q, s),
-                                      value_of(beside_walls_kT_q, s), radius_);
+    case pressure_minus_theory_q: {  // against the bulk's P = Z n kT in front
+      // of the middles, at this stretch's eta and kT there, Z for N balls
+      const double eta_beside = value_of(beside_walls_eta_q, s);
+      return s.push_x_middle / t - fixed_count_compressibility(eta_beside, balls_) *
+                                       eta_beside * value_of(beside_walls_kT_q, s) /
+                                       (std::numbers::pi * a2);
     }
     case beside_walls_eta_q:
       return s.beside_time / t / (beside_left_.area() + beside_right_.area()) *
@@ -361,13 +373,28 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return s.beside_energy / (2 * s.beside_time);
     case mean_free_path_minus_theory_q:
       return s.interior_speed / s.interior_time / rate -
-             enskog_mean_free_path(eta, radius_);
+             enskog_mean_free_path(eta, radius_) / fixed_count_rate_factor(eta, balls_);
     case quantity_count:
       break;
   }
   return not_known;
 }
 // [/anchor: measured-quantities]
+
+bool GasStatistics::follows_table_heat(Quantity q) {
+  switch (q) {
+    case bulk_z_minus_theory_q:
+    case collision_rate_minus_theory_q:
+    case pressure_minus_theory_q:
+    case mean_free_path_minus_theory_q:
+    case collision_rate_box_q:
+    case collision_rate_q:
+    case quantity_count:
+      return false;
+    default:
+      return true;
+  }
+}
 
 // Where each quantity goes among the figures (a switch, so that the compiler
 // names any quantity left out).
@@ -435,15 +462,20 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   for (int q = 0; q < quantity_count; ++q) {
     Average& average = average_of(m, static_cast<Quantity>(q));
     average.value = value_of(static_cast<Quantity>(q), s);
-    average.error = blocking_[static_cast<std::size_t>(q)].error();
+    const BlockingAnalysis& blocking = blocking_[static_cast<std::size_t>(q)];
+    average.error = blocking.error();
+    average.status = blocking.status();
+    average.batch_error = blocking.batch_error();
   }
   // The snapshots' averages.
   const BlockingAnalysis& pair = structure_.pair_contact();
   const BlockingAnalysis& wall = structure_.wall_contact_density();
-  m.pair_contact = {pair.mean(), pair.error()};
+  m.pair_contact = {pair.mean(), pair.error(), pair.status(), pair.batch_error()};
   const BlockingAnalysis& pair_difference = structure_.pair_contact_minus_theory();
-  m.pair_contact_minus_theory = {pair_difference.mean(), pair_difference.error()};
-  m.wall_contact_pressure = {kT_ * wall.mean(), kT_ * wall.error()};
+  m.pair_contact_minus_theory = {pair_difference.mean(), pair_difference.error(),
+                                 pair_difference.status(), pair_difference.batch_error()};
+  m.wall_contact_pressure = {kT_ * wall.mean(), kT_ * wall.error(), wall.status(),
+                             kT_ * wall.batch_error()};
   // The histogram: the ball-time fraction of each bin, to now.
   const double ball_time = s.duration * static_cast<double>(balls_);
   for (std::size_t b = 0; b < bin_count_.size(); ++b) {

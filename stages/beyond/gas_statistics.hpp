@@ -39,6 +39,11 @@ inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 struct Average {
   double value = not_known;
   double error = not_known;
+  // Why the error is not known, or that it is (beyond/blocking.hpp).
+  ErrorStatus status = ErrorStatus::few_samples;
+  // What the batches alone would claim (BlockingAnalysis::batch_error): the
+  // error once it is known; before, a figure too short to trust.
+  double batch_error = not_known;
 };
 
 // The warm-up: how many collisions of two balls, per ball, are left out of
@@ -176,6 +181,11 @@ class GasStatistics final : public CollisionObserver {
     quantity_count
   };
   double value_of(Quantity q, const Sums& s) const;
+  // Does the quantity wander with the table's heat (measured: its blocking
+  // curve still rises past the sound's crossing time), so that its error
+  // waits for batches as long as table_heat_time? The differences from
+  // theory, taken sample by sample, do not; nor do the collision rates.
+  static bool follows_table_heat(Quantity q);
   static Average& average_of(MeasuredFigures& m, Quantity q);
 
   void start_averages(const Gas& gas);
@@ -205,6 +215,7 @@ class GasStatistics final : public CollisionObserver {
   Region beside_left_, beside_right_;
   double bin_width_ = 0;
   long long collisions_per_sample_ = 1;
+  double heat_time_ = 0;  // table_heat_time: the shortest batch, in model time
 
   // The state as of the last collision.
   long long collisions_ = 0;        // since this object was made

@@ -38,7 +38,11 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   const double eta_error = m.interior_area_fraction.error;
   // kT: the interior's own (the box's on average; lesson 11).
   const double kT = m.interior_kT.value, a = gas.radius, pi = std::numbers::pi;
-  const double z = hard_disc_fluid_compressibility(eta);
+  // The reference for a closed box of N balls (kinetic_theory.hpp): the
+  // open bulk's Z shifted by fixed_count_shift, Enskog's rate by its factor.
+  const std::size_t balls = gas.balls.size();
+  k.bulk_z_shift = fixed_count_shift(eta, balls);
+  const double z = fixed_count_compressibility(eta, balls);
   const double slope = hard_disc_fluid_compressibility_slope(eta);  // dZ / d eta
   k.bulk_z_theory = {z, std::abs(slope) * eta_error};
   k.bulk_z_henderson = henderson_compressibility(eta);
@@ -48,20 +52,21 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   // strips of the interior beside those middles, at their own eta and kT
   // (their slow sound waves push on the middles too; lesson 11).
   const double eta_beside = m.beside_walls_eta.value, kT_beside = m.beside_walls_kT.value;
-  const double z_beside = hard_disc_fluid_compressibility(eta_beside);
+  const double z_beside = fixed_count_compressibility(eta_beside, balls);
   k.pressure_theory = {
-      hard_disc_fluid_pressure(eta_beside, kT_beside, a),
+      z_beside * eta_beside * kT_beside / (pi * a * a),
       std::abs(z_beside +
                eta_beside * hard_disc_fluid_compressibility_slope(eta_beside)) *
           kT_beside / (pi * a * a) * m.beside_walls_eta.error};
   // Enskog: rate = 2 (2a) n g sqrt(pi kT) with n g = (Z - 1) / (2 eta) n
   // = (Z - 1) / (2 pi a^2), so d rate / d eta = Z' 2 sqrt(pi kT) / (pi a);
   // the free path lambda = sqrt(pi kT / 2) / rate moves the other way.
-  const double rate = enskog_collision_rate(eta, a, kT);
+  const double factor = fixed_count_rate_factor(eta, balls);
+  const double rate = enskog_collision_rate(eta, a, kT) * factor;
   const double rate_error =
       std::abs(slope) * 2 * std::sqrt(pi * kT) / (pi * a) * eta_error;
   k.collision_rate_theory = {rate, rate_error};
-  const double path = enskog_mean_free_path(eta, a);
+  const double path = enskog_mean_free_path(eta, a) / factor;
   k.mean_free_path_theory = {path, path * rate_error / rate};
   // The reference g(2a)'s uncertainty, from eta's: |dg/deta| x eta's error.
   k.pair_contact_theory_error =
@@ -204,7 +209,8 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFig
       fmt::format("{:<18}{:<22}{}", "Z box: walls, vir", shown(m.box_z_walls),
                   shown(m.box_z_virial)),
       bulk("Z bulk", m.bulk_z, k.bulk_z_theory,
-           fmt::format("Henderson {}", shown(k.bulk_z_henderson))),
+           std::isnan(k.bulk_z_shift) ? std::string("N fixed -")
+                                      : fmt::format("N fixed {:+.2g}", k.bulk_z_shift)),
       fmt::format("{:<18}{:<22}{}", "  eta inside", shown(m.interior_area_fraction),
                   z_difference),
       row("  g(2a) inside", m.pair_contact,
@@ -355,6 +361,7 @@ constexpr Column columns[] = {
     {"mean_free_path_deviation_error", deviation_error<&M::mean_free_path_minus_theory>},
     {"g_contact_deviation", deviation_value<&M::pair_contact_minus_theory>},
     {"g_contact_deviation_error", deviation_error<&M::pair_contact_minus_theory>},
+    {"Z_fixed_N_shift", kinetic_value<&K::bulk_z_shift>},
 };
 
 }  // namespace
