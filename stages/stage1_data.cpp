@@ -6,12 +6,14 @@
 
 namespace gas {
 
+// [anchor: centres-at]
 std::vector<Point> centres_at(const Gas& gas, double time) {
   std::vector<Point> centres;
   centres.reserve(gas.balls.size());
   for (const Ball& ball : gas.balls) centres.push_back(centre_at(ball, time));
   return centres;
 }
+// [/anchor: centres-at]
 
 #ifndef GAS_STUDENT_KINETIC_ENERGY  // see lessons/exercises/01-kinetic-energy
 double kinetic_energy(const Gas& gas) {

@@ -18,10 +18,11 @@
 
 namespace gas {
 
-// One row of the article's R(4, N), plus the moment it was written.
+// A ball's column of the article's R(4, N) — R(1..4, i) for ball i — plus
+// the moment it was written.
 //
 // The article keeps x, y, vx, vy of every ball at the common time T and moves
-// every ball at every step. We write a ball's row only when that ball
+// every ball at every step. We write a ball's column of R only when that ball
 // collides, and remember when: its centre at any later moment is
 // (x + vx * (time - since), y + vy * (time - since)) until its next collision.
 // A free flight is then one multiplication, not a sum of many small steps,

@@ -45,7 +45,7 @@ struct SceneText {
   std::optional<Given> radius, display_step, width, height;  // a, T0, A1, A2
   std::optional<Given> ball_count;                           // N
   std::optional<Given> start_time;  // T, the moment the scene starts (none: 0)
-  std::vector<Ball> balls;          // the 'ball' lines: R, row by row
+  std::vector<Ball> balls;          // the 'ball' lines: R, a ball's column a line
   std::vector<int> ball_lines;      // the line of each
   std::vector<bool> since_given;    // whether each gave SINCE (else: since = T)
   std::optional<RandomLine> random;
@@ -187,9 +187,9 @@ void read_line(std::string_view line, int line_number, SceneText& scene) {
   } else if (keyword == "T") {
     single(scene.start_time, "the model time the scene starts at");
   } else if (keyword == "ball") {
-    // x y vx vy, or (as --dump writes) x y vx vy SINCE: the row as it was
-    // written at the moment SINCE. Without SINCE the row is the centre at the
-    // scene's T, filled in once the whole file is read (checked()).
+    // x y vx vy, or (as --dump writes) x y vx vy SINCE: the ball's column of R
+    // as it was written at the moment SINCE. Without SINCE the column is the
+    // centre at the scene's T, filled in once the whole file is read (checked()).
     if (count > 5) {
       fail(scene.file_name, line_number,
            fmt::format("'ball' takes 4 numbers (x y vx vy) or 5 (x y vx vy SINCE), "
@@ -332,7 +332,7 @@ double start_time(const SceneText& scene) {
 }
 
 // Check the times of a scene that carries them (a --dump): T is not negative
-// (model time starts at 0 and only goes on), no row was written after T, and
+// (model time starts at 0 and only goes on), no column of R was written after T, and
 // T leaves the clock fine enough to follow the gas. Doubles near T lie
 // T * 2^-52 apart; the quickest crossing of the room between two walls (the
 // smaller of A1 - 2a and A2 - 2a, at the highest speed along an axis) must
@@ -370,7 +370,7 @@ void check_times(const SceneText& scene) {
 // [/anchor: check-times]
 
 // Where each ball's centre is at the scene's T, the moment the run starts
-// from: the checks below look at these, not at the rows. A 'ball' line
+// from: the checks below look at these, not at the columns of R. A 'ball' line
 // without SINCE gives its centre at T itself (taken as written, not
 // recomputed); one with SINCE gives it at SINCE, and it has flown since.
 // [anchor: centres-at-start]

@@ -2,8 +2,8 @@
 //
 // What this stage does: reads a scene file — the radius, the table, the
 // display step and the initial centre and velocity of every ball (or, in a
-// checkpoint written by --dump, the start time T and every ball's row with
-// the moment it was written) — checks
+// checkpoint written by --dump, the start time T and every ball's column of R
+// with the moment it was written) — checks
 // that it describes a gas the later stages can run, and builds the Gas.
 // The reading is split by job: a line into words, a word into a number, a
 // keyword line into what the file said; then the checks of the whole scene,
@@ -102,7 +102,7 @@ Gas build_gas(const SceneDescription& scene);
 
 // The gas as a scene file that stage 2 reads back as the very same Gas, every
 // double to the bit: a checkpoint for --dump. It writes the present time T
-// (a line 'T') and each ball's row as it is, 'ball x y vx vy SINCE' (the
+// (a line 'T') and each ball's column of R as it is, 'ball x y vx vy SINCE' (the
 // centre at the moment `since`, not recomputed at T, which would round),
 // every number with 17 significant digits (enough to give back the same
 // double).

@@ -21,6 +21,7 @@
 namespace gas {
 
 // K, the kind of a collision.
+// [anchor: collision-kind]
 enum class CollisionKind {
   none = 0,             // K = 0: nothing will ever collide (e.g. one ball at rest)
   horizontal_wall = 1,  // K = 1: the wall y = 0 or y = A2; vy changes sign
@@ -29,6 +30,7 @@ enum class CollisionKind {
 };
 
 inline constexpr double never = std::numeric_limits<double>::infinity();
+// [/anchor: collision-kind]
 
 // The result of stage 4.
 // [anchor: collision]
@@ -107,11 +109,11 @@ class FirstCollisionFinder {
  public:
   virtual ~FirstCollisionFinder() = default;
   // Predicts from scratch: at the start, and after anything but a collision
-  // rewrote rows of R (the B key).
+  // rewrote columns of R (the B key).
   virtual void rebuild(const Gas& gas, const CentreLimits& limits) = 0;
   // The first collision: TC, K, N1, N2, as find_first_collision gives it.
   virtual Collision first(const Gas& gas) = 0;
-  // Told after stage 5 carried out `done` (the rows of N1, and N2, rewritten).
+  // Told after stage 5 carried out `done` (N1's column of R, and N2's, rewritten).
   virtual void update(const Gas& gas, const Collision& done) = 0;
   // Its name, for messages: "scan", "table", "grid".
   virtual const char* name() const = 0;

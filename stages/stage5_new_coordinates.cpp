@@ -21,7 +21,7 @@ void shift_time(Gas& gas, Picture& picture, double new_time) {
 // It exchanges the balls' velocity components along d and leaves the rest.
 // At contact |d|^2 = 4a^2; we divide by the |d|^2 of the actual centres, which
 // round-off may leave a hair off 4a^2, because only then is the kinetic energy
-// exactly what it was (lesson 5 shows the algebra).
+// exactly what it was (lesson 5 derives it).
 #ifndef GAS_STUDENT_COLLIDE_BALLS  // see lessons/exercises/07-collide-balls
 // [anchor: collide-balls]
 void collide_balls(Ball& p, Ball& q) {
@@ -39,12 +39,14 @@ void collide_balls(Ball& p, Ball& q) {
 namespace {
 
 // Moves one ball along its flight to model time `time` and records it there.
+// [anchor: move-to]
 void move_to(Ball& ball, double time) {
   const Point centre = centre_at(ball, time);
   ball.x = centre.x;
   ball.y = centre.y;
   ball.since = time;
 }
+// [/anchor: move-to]
 
 }  // namespace
 

@@ -41,10 +41,12 @@ inline StepEnd step_end(double now, double display_step, double collision_time) 
 // [/anchor: step-length]
 
 // The centres a picture shows: the old ones (RS) and the new ones.
+// [anchor: picture]
 struct Picture {
   std::vector<Point> old_centres;  // RS(2, N): the centres drawn last time
   std::vector<Point> centres;      // the centres at T, to draw now
 };
+// [/anchor: picture]
 
 // Shifts the clock to `new_time` (T + T1): the centres drawn so far become the
 // old ones, and the centres at the new time are computed.

@@ -29,12 +29,14 @@ const char* mode_name(ScreenMode mode);
 
 // The base colour's tone: the B key changes it, so that the reversed run
 // looks different from the forward one.
+// [anchor: tone]
 struct Tone {
   char ball_glyph;   // a ball's image
   char trail_glyph;  // a trajectory segment
   int ansi_colour;   // the ANSI foreground colour, when colour is on
 };
 inline constexpr Tone tones[2] = {{'O', '.', 36}, {'@', '+', 33}};
+// [/anchor: tone]
 
 // The cells of a ball's image centred at `centre`: every cell whose middle is
 // within a of the centre, and always the centre's own cell (a ball smaller

@@ -25,9 +25,9 @@ namespace gas {
 
 // Beyond the article, one narrow hook: an observer is told of each collision
 // just before stage 5 carries it out, with the gas as it was, and just after,
-// with the new velocities; and, before the key B writes every ball's row
-// afresh at T, of that too. Kinetic theory keeps its running sums this way
-// (stages/beyond/, lesson 11); the stages themselves need none.
+// with the new velocities; and, before the key B writes every ball's column of
+// R afresh at T, of that too. Kinetic theory keeps its running sums this way
+// (stages/beyond/, lesson 13); the stages themselves need none.
 class CollisionObserver {
  public:
   virtual ~CollisionObserver() = default;

@@ -1,5 +1,5 @@
 // Tests for the blocking analysis (stages/beyond/blocking.*,
-// lessons/11-kinetic-theory.md) on series whose standard error of the mean is
+// lessons/14-error-bars.md) on series whose standard error of the mean is
 // known in closed form.
 //
 // AR(1): x_{t+1} = phi x_t + sqrt(1 - phi^2) e_t, e_t independent standard

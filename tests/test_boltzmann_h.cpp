@@ -1,5 +1,5 @@
 // Tests for Boltzmann's H of the speeds (stages/beyond/boltzmann_h.*,
-// lessons/11-kinetic-theory.md): H = sum p_i ln(p_i / q_i) against the 2D
+// lessons/12-statistics-screen.md): H = sum p_i ln(p_i / q_i) against the 2D
 // Maxwell-Boltzmann distribution at the same energy.
 //
 // - Every ball at one speed (the H-theorem scene's start): H is large, and

@@ -1,9 +1,9 @@
-// Lesson 11's pictures (tests/figures/lesson11_figures.cpp) can still be
-// made, and the committed ones say what the lesson says. Not a measurement:
+// The pictures of lessons 12 and 13 (tests/figures/kinetic_figures.cpp) can
+// still be made, each into its lesson's folder. Not a measurement:
 // `gas-figures --smoke` runs every part a hundred times shorter, into a
 // scratch folder, without pictures; this test checks that each part wrote its
-// numbers. (The real pictures are made by hand, in a few minutes:
-// lessons/11-kinetic-theory.md, "Lesson 11 in pictures".)
+// numbers where its lesson looks. (The real pictures are made by hand, in a
+// few minutes: lessons/13-box-and-bulk.md, "Lesson 13 in pictures".)
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -31,15 +31,16 @@ TEST_SUITE("figures") {
     REQUIRE_MESSAGE(std::system(command.c_str()) == 0, "gas-figures --smoke failed");
     // One line per area fraction, per speed bin, per bin of each curve.
     const std::vector<std::pair<std::string, std::size_t>> files = {
-        {"eos.csv", 1 + 14},
-        {"speeds.csv", 1 + 50},
-        {"structure-contact.csv", 1 + 4},
-        {"structure-0.5.csv", 1 + 60 + 200}};
+        {"lesson-13/eos.csv", 1 + 14},
+        {"lesson-12/speeds.csv", 1 + 50},
+        {"lesson-13/structure-contact.csv", 1 + 4},
+        {"lesson-13/structure-0.5.csv", 1 + 60 + 200}};
     for (const auto& [name, lines] : files) {
       CAPTURE(name);
       CHECK(lines_of(read_file(scratch.file(name))).size() == lines);
     }
     // H: the two runs, a line per display step (T0 = 0.25 to T = 20 and 60).
-    CHECK(lines_of(read_file(scratch.file("h-theorem.csv"))).size() == 1 + 80 + 240);
+    CHECK(lines_of(read_file(scratch.file("lesson-12/h-theorem.csv"))).size() ==
+          1 + 80 + 240);
   }
 }

@@ -1,5 +1,5 @@
 // Tests for the structure of the fluid (stages/beyond/fluid_structure.*,
-// lessons/11-kinetic-theory.md): the pair correlation g(r), the density of
+// lessons/13-box-and-bulk.md): the pair correlation g(r), the density of
 // centres beside a wall, their values at contact, and the --structure file.
 //
 // - The fit at contact: a cubic's bin means give back its value at contact.
@@ -279,7 +279,7 @@ TEST_SUITE("kinetic-theory") {
     CHECK(kT * fitted_contact(wall, HUGE_VAL) ==
           doctest::Approx(r.csv.at("wall_contact_pressure")).epsilon(1e-12));
     // g(2a+) against the reference at the interior's density: three combined
-    // errors, and no allowance for a bias (the cubic's is 0.02 %, lesson 11).
+    // errors, and no allowance for a bias (the cubic's is 0.02 %, lesson 14).
     // (The theory's own error, from eta_int's, counts once it is known.)
     CHECK(r.csv.at("g_contact_error") < 0.005 * r.csv.at("g_contact"));
     CHECK(r.csv.at("g_contact_theory") ==

@@ -1,5 +1,5 @@
 // Tests for the reference equation of state of the hard-disc fluid
-// (stages/beyond/hard_disc_fluid.*, lessons/11-kinetic-theory.md):
+// (stages/beyond/hard_disc_fluid.*, lessons/13-box-and-bulk.md):
 //
 // - Its virial expansion: the series of Kolafa and Rottner, expanded in eta,
 //   gives the reduced virial coefficients b_n = 2^(n-1) B_n / B_2^(n-1):

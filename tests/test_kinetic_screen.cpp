@@ -24,7 +24,7 @@ TEST_SUITE("kinetic-theory") {
   TEST_CASE("draw_kinetic_figures puts each figure at a fixed place whatever its value") {
     // Two different sets of figures: every label starts at the same cell, and
     // the "average" and "theory" columns start at the same columns, on both
-    // screens (lesson 11 has the layout); few balls say so in words.
+    // screens (lesson 12 has the layout); few balls say so in words.
     gas::Figures small;
     gas::Figures big = gas::testing::some_figures();
     big.time = 123456.75;

@@ -1,6 +1,6 @@
 // Tests for the statistics screen's physics (stages/beyond/kinetic_theory.*,
-// lessons/11-kinetic-theory.md): the gas, run by the program's own stages,
-// against kinetic theory.
+// lessons/12-statistics-screen.md, 13-box-and-bulk.md, 14-error-bars.md): the
+// gas, run by the program's own stages, against kinetic theory.
 //
 // - The formulas themselves: the 2D Maxwell-Boltzmann mean, Henderson's Z
 //   and g(2a) through the virial theorem, Enskog's rate through the contact
@@ -112,7 +112,7 @@ Measured measure_run(int side, double eta, double length, unsigned seed) {
   Measured r;
   r.kT = gas::kinetic_energy(control.gas) / (side * side);
   r.m = statistics.measured(control.gas);
-  // Contact relation (lesson 11): Z - 1 = rate * s * sqrt(pi m / kT) / 4.
+  // Contact relation (lesson 12): Z - 1 = rate * s * sqrt(pi m / kT) / 4.
   const double factor = 2 * control.gas.radius * std::sqrt(pi / r.kT) / 4;
   r.z_from_rate = 1 + factor * r.m.collision_rate_box.value;
   r.z_from_rate_error = factor * r.m.collision_rate_box.error;
@@ -136,7 +136,7 @@ double ks_distance(std::vector<double> speeds, double kT) {
 // 1024 balls, against the reference at the interior's own density; the box's
 // own Z from its walls and from its collisions, which must agree; and the
 // interior denser than N / A (N / A counts the strip of width a along each
-// wall, where no centre goes; lesson 11). `length`: time units for about 10^6 collisions.
+// wall, where no centre goes; lesson 13). `length`: time units for about 10^6 collisions.
 void check_equation_of_state(double eta, double length, unsigned seed) {
   const Measured r = measure_run(32, eta, length, seed);
   const gas::MeasuredFigures& m = r.m;
@@ -155,7 +155,7 @@ void check_equation_of_state(double eta, double length, unsigned seed) {
   // The bulk: Z - Z_ref(eta_inside) within three of its errors (below), the
   // error a real one, under 1 % (the reference's own accuracy, 0.1 %, is far
   // below it here). Z alone may have no error yet: it wanders slowly with
-  // the interior's density (lesson 11).
+  // the interior's density (lesson 14).
   // The figures of the box wander with the table's heat and sound: these
   // runs are too short for their errors (rule 2 of blocking.hpp; at eta =
   // 0.1 the run just reaches it). What their batches say stands in for
@@ -175,17 +175,17 @@ void check_equation_of_state(double eta, double length, unsigned seed) {
   REQUIRE(std::isfinite(m.box_z_virial.batch_error));
   CHECK(std::abs(m.box_z_walls.value - m.box_z_virial.value) <=
         3 * std::hypot(m.box_z_walls.batch_error, m.box_z_virial.batch_error));
-  // The contact relation holds for the box, walls and all (lesson 11).
+  // The contact relation holds for the box, walls and all (lesson 12).
   CHECK(std::abs(m.box_z_virial.value - r.z_from_rate) <=
         3 * std::hypot(m.box_z_virial.batch_error, r.z_from_rate_error));
   // The interior is denser than N / A (no centre enters the strip of width a
-  // along each wall, lesson 11).
+  // along each wall, lesson 13).
   CHECK(eta_inside > eta);
   // Like with like: the interior's collision rate (both balls of each
   // collision whose midpoint is inside, per ball-time inside) against
   // Enskog's at eta_inside, and Z against the reference, each within three
   // errors of the difference taken sample by sample (which carries eta's
-  // error into the theory's side; lesson 11, "Errors that hold").
+  // error into the theory's side; lesson 14, "Errors that hold").
   CAPTURE(m.collision_rate.value);
   CAPTURE(m.collision_rate_minus_theory.value);
   CAPTURE(m.collision_rate_minus_theory.error);
@@ -207,7 +207,7 @@ void check_equation_of_state(double eta, double length, unsigned seed) {
   if (eta > 0.4) CHECK(m.collision_rate_box.value < m.collision_rate.value);
   // The structure at contact: g(2a+) among the balls of the interior against
   // the reference's (Z - 1) / (2 eta) at eta_inside, within three errors
-  // (the fit at contact is biased by some 0.02 % at eta = 0.5, lesson 11).
+  // (the fit at contact is biased by some 0.02 % at eta = 0.5, lesson 14).
   CAPTURE(m.pair_contact.value);
   CAPTURE(m.pair_contact.error);
   const double g_reference = gas::hard_disc_fluid_contact_value(eta_inside);
@@ -268,7 +268,7 @@ void check_equation_of_state(double eta, double length, unsigned seed) {
   // snapshots' strips hold a few balls each, so on these runs the contact
   // density's error is 2 to 3 % and three errors resolve some 6 to 7 %: a
   // strip 15 % off fails, one 5 % off does not (data/eos-0.5.scene, four
-  // times the balls and longer, resolves 2 %: lesson 11).
+  // times the balls and longer, resolves 2 %: lesson 13).
   CAPTURE(m.wall_contact_pressure.value);
   CAPTURE(m.wall_contact_pressure.error);
   CAPTURE(m.wall_middle_pressure.value);
@@ -574,7 +574,7 @@ TEST_SUITE("kinetic-theory") {
     // sqrt(1024 pi / 0.5) = 80.2: lambda = 1 / (2 sqrt 2 (2a) n g(2a)) with the
     // reference's g(2a) at 0.5, 3.1064, and n = 0.5 / pi: lambda = 0.35756,
     // and L / lambda = 224.3, so 225 collisions a ball (the regeneration
-    // script of lesson 11 checks across seeds that the averages after it
+    // script of lesson 14 checks across seeds that the averages after it
     // carry no bias). A dilute gas, one mean free path wider than the table,
     // keeps the fewest, 10; one ball none.
     const Gas dense = lattice_gas(32, 0.5, 1);
@@ -725,7 +725,7 @@ TEST_SUITE("kinetic-theory") {
 namespace {
 
 // The bin of the statistics screen's histogram a speed belongs in, worked
-// out here from its definition (lesson 11): `bins` equal bins from 0 to
+// out here from its definition (lesson 12): `bins` equal bins from 0 to
 // 2.5 v_rms, v_rms = sqrt(2 kT) of the gas at the start (its energy does not
 // change); `bins` itself for a speed beyond the last bin.
 std::size_t histogram_bin(double speed, double kT, int bins) {

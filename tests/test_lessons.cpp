@@ -13,6 +13,13 @@
 //   <!-- unchecked: WHY -->              followed by a ```cpp or ```text block
 //                                        that nothing can check (a sketch, an
 //                                        example of a format), and WHY not
+//   <!-- report: data/reports/FILE NAME --> followed by lines up to the next
+//                                        blank one (a Markdown table, say): the
+//                                        lines after '<!-- section: NAME -->'
+//                                        in FILE up to its next blank line. A
+//                                        report is written by the command it
+//                                        names (figures that take minutes to
+//                                        make), so a lesson's figures follow it
 //
 // A lesson is every .md file under lessons/, the exercises' instructions
 // included. Every ```cpp and every ```text block of a lesson has one of these
@@ -187,10 +194,10 @@ std::vector<std::string> lesson_files() {
 
 // A quoted block of a lesson: its marker, and where its content lies.
 struct Quote {
-  enum class Kind { code, output } kind = Kind::code;
+  enum class Kind { code, output, report } kind = Kind::code;
   int marker_line = 0;    // 1-based line of the <!-- ... --> marker
-  std::string file;       // code: the file named
-  std::string anchor;     // code: the anchor named
+  std::string file;       // code, report: the file named
+  std::string anchor;     // code: the anchor named; report: the section named
   std::string arguments;  // output: ARGS as written
   std::size_t first = 0;  // index of the first content line
   std::size_t end = 0;    // index of the closing fence
@@ -215,6 +222,7 @@ std::vector<std::string> split_on_spaces(const std::string& text) {
 const std::regex code_marker(R"(^<!-- code: (\S+) (\S+) -->$)");
 const std::regex output_marker(R"(^<!-- output:(.*)-->$)");
 const std::regex unchecked_note(R"(^<!-- unchecked: \S.*\S -->$)");
+const std::regex report_marker(R"(^<!-- report: (data/reports/\S+) (\S+) -->$)");
 
 // Finds the quoted blocks of a lesson. Markers are looked for only outside
 // fenced blocks, so a lesson can show the syntax inside a fence.
@@ -245,11 +253,32 @@ std::vector<Quote> find_quotes(const std::vector<std::string>& lines) {
       if (!quote.arguments.empty() && quote.arguments.back() == ' ')
         quote.arguments.pop_back();
       fence = "```text";
-    } else if (line.rfind("<!-- code:", 0) == 0 || line.rfind("<!-- output:", 0) == 0) {
+    } else if (std::regex_match(line, match, report_marker)) {
+      // A report's lines: up to the next blank line, no fence.
+      quote.kind = Quote::Kind::report;
+      quote.file = match[1];
+      quote.anchor = match[2];
+      quote.marker_line = static_cast<int>(i) + 1;
+      std::size_t end = i + 1;
+      while (end < lines.size() && !lines[end].empty()) ++end;
+      if (end == i + 1) {
+        quote.fault = "a report marker must be followed at once by the quoted lines";
+        quotes.push_back(quote);
+        continue;
+      }
+      quote.first = i + 1;
+      quote.end = end;
+      for (std::size_t k = quote.first; k < end; ++k) quote.content += lines[k] + "\n";
+      quotes.push_back(quote);
+      i = end - 1;
+      continue;
+    } else if (line.rfind("<!-- code:", 0) == 0 || line.rfind("<!-- output:", 0) == 0 ||
+               line.rfind("<!-- report:", 0) == 0) {
       quote.marker_line = static_cast<int>(i) + 1;
       quote.fault =
-          "a malformed marker: write '<!-- code: stages/FILE NAME -->' or "
-          "'<!-- output: ARGS -->' alone on its line";
+          "a malformed marker: write '<!-- code: stages/FILE NAME -->', "
+          "'<!-- output: ARGS -->' or '<!-- report: data/reports/FILE NAME -->' alone "
+          "on its line";
       quotes.push_back(quote);
       continue;
     } else {
@@ -396,6 +425,28 @@ Expected expected_output(const Quote& quote) {
   return expected;
 }
 
+// A report's section: the lines after "<!-- section: NAME -->" in the
+// report up to its next blank line.
+Expected expected_report(const Quote& quote) {
+  Expected expected;
+  expected.what = fmt::format("section '{}' of {}", quote.anchor, quote.file);
+  if (!fs::is_regular_file(source_path(quote.file))) {
+    expected.why_not = fmt::format("{} does not exist", quote.file);
+    return expected;
+  }
+  const std::vector<std::string> lines = lines_of(read_file(source_path(quote.file)));
+  const std::string opening = fmt::format("<!-- section: {} -->", quote.anchor);
+  const auto found = std::find(lines.begin(), lines.end(), opening);
+  if (found == lines.end()) {
+    expected.why_not = fmt::format("{} has no line '{}'", quote.file, opening);
+    return expected;
+  }
+  std::string text;
+  for (auto it = found + 1; it != lines.end() && !it->empty(); ++it) text += *it + "\n";
+  expected.text = text;
+  return expected;
+}
+
 bool updating() {
   const char* update = std::getenv("GAS_UPDATE_GOLDEN");
   return update != nullptr && std::string(update) == "1";
@@ -418,9 +469,10 @@ std::vector<std::string> check_lesson(const std::string& lesson, AnchorCache& ca
       problems.push_back(fmt::format("{}: {}", where, quote.fault));
       continue;
     }
-    const Expected expected = quote.kind == Quote::Kind::code
-                                  ? expected_code(quote, cache)
-                                  : expected_output(quote);
+    const Expected expected =
+        quote.kind == Quote::Kind::code     ? expected_code(quote, cache)
+        : quote.kind == Quote::Kind::report ? expected_report(quote)
+                                            : expected_output(quote);
     if (!expected.text) {
       problems.push_back(fmt::format("{}: {}", where, expected.why_not));
       continue;
@@ -490,6 +542,102 @@ std::set<std::string> relative_links(const std::string& text,
     links.insert((fs::path(directory) / target).lexically_normal().generic_string());
   }
   return links;
+}
+
+// ------------------------------------------------ words, asides, lengths
+
+// The most lines a numbered lesson may have: one lesson, one sitting of
+// about 45 minutes (lessons/README.md, "How to use them").
+constexpr std::size_t most_lesson_lines = 500;
+
+// Is `lesson` ("lessons/....md") a numbered lesson, such as
+// lessons/4-first-collision.md (not the README, not an exercise)?
+bool numbered_lesson(const std::string& lesson) {
+  static const std::regex numbered(R"(^lessons/[0-9]+-[^/]+\.md$)");
+  return std::regex_match(lesson, numbered);
+}
+
+// A phrase no lesson may use, and what to write instead.
+struct RetiredPhrase {
+  std::regex pattern;
+  const char* instead;
+};
+
+const std::vector<RetiredPhrase>& retired_phrases() {
+  using flags = std::regex_constants::syntax_option_type;
+  const flags any_case = std::regex::ECMAScript | std::regex::icase;
+  static const std::vector<RetiredPhrase> phrases = {
+      {std::regex(R"(earlier versions?)", any_case),
+       "the lessons say nothing of their own past versions: history goes in commit "
+       "messages"},
+      {std::regex(R"(before issue)", any_case),
+       "the lessons say nothing of their own past versions: history goes in commit "
+       "messages"},
+      {std::regex(R"(\bissues?\s+(#\s*)?[0-9]+)", any_case),
+       "no issue numbers in the lessons: history goes in commit messages"},
+      {std::regex(R"(collisions? of two balls a ball)", any_case),
+       "write 'pair collisions per ball' (2 x ball-ball collisions / N: each collision "
+       "counts for both its balls)"},
+      {std::regex(R"(\bcollisions? a ball\b)", any_case),
+       "write 'pair collisions per ball' or 'wall collisions per ball' (or 'collisions "
+       "per ball, walls and pairs')"},
+      // Case matters: R is the article's array.
+      {std::regex(R"(\brows? of R\b)"),
+       "ball i is column i of R(4, N): write 'column of R'"},
+      {std::regex(R"(ball's row\b)"),
+       "ball i is column i of R(4, N): write 'column of R'"},
+  };
+  return phrases;
+}
+
+// The problems of one lesson's words, asides and length, each "LINE: ..."
+// (a length problem has no line). Checks, outside fenced blocks for the
+// asides and everywhere for the phrases: no retired phrase; every block
+// quote is an aside, opening with '> **Aside: TITLE.**' (lessons/README.md);
+// no fenced block inside a block quote (nothing there could be checked); a
+// numbered lesson at most most_lesson_lines long.
+std::vector<std::string> lesson_form_problems(const std::string& lesson,
+                                              const std::vector<std::string>& lines) {
+  std::vector<std::string> problems;
+  static const std::regex aside_opening(R"(^> \*\*Aside: [^*]+\.\*\* \S.*$)");
+  bool in_fence = false;
+  bool in_quote = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    const int number = static_cast<int>(i) + 1;
+    for (const RetiredPhrase& phrase : retired_phrases()) {
+      std::smatch match;
+      if (std::regex_search(line, match, phrase.pattern)) {
+        problems.push_back(
+            fmt::format("{}: '{}': {}", number, match.str(0), phrase.instead));
+      }
+    }
+    if (line.rfind("```", 0) == 0) {
+      in_fence = !in_fence;
+      in_quote = false;
+      continue;
+    }
+    if (in_fence) continue;
+    const bool quoted = line.rfind(">", 0) == 0;
+    if (quoted && !in_quote && !std::regex_match(line, aside_opening)) {
+      problems.push_back(fmt::format(
+          "{}: a block quote that is not an aside: open it with '> **Aside: TITLE.** "
+          "text' (lessons/README.md)",
+          number));
+    }
+    if (quoted && line.find("```") != std::string::npos) {
+      problems.push_back(fmt::format(
+          "{}: a fenced block inside a block quote: nothing checks it there; put "
+          "code and output outside the aside",
+          number));
+    }
+    in_quote = quoted;
+  }
+  if (numbered_lesson(lesson) && lines.size() > most_lesson_lines) {
+    problems.push_back(fmt::format("{} lines, more than {}: one lesson, one sitting",
+                                   lines.size(), most_lesson_lines));
+  }
+  return problems;
 }
 
 std::string joined(const std::vector<std::string>& problems) {
@@ -597,6 +745,33 @@ TEST_SUITE("lessons") {
           std::vector<std::string>{"--keys", "S>>R.B", "--until", "80"});
   }
 
+  TEST_CASE("lessons: a report's figures are read up to the blank line, and checked") {
+    // This test proves that the quoted reports can fail: a made-up lesson
+    // quoting a section of data/reports/kinetic-seeds.md, its table's last
+    // line changed, and a report marker with nothing after it.
+    const std::string lesson =
+        "Prose.\n<!-- report: data/reports/kinetic-seeds.md closed -->\n| a | b |\n"
+        "|---|---|\n| 1 | 2 |\n\nMore prose.\n<!-- report: data/reports/none.md x -->\n\n"
+        "<!-- report: reports/kinetic-seeds.md closed -->\n";
+    const std::vector<Quote> quotes = find_quotes(lines_of(lesson));
+    REQUIRE(quotes.size() == 3);
+    CHECK(quotes[0].kind == Quote::Kind::report);
+    CHECK(quotes[0].file == "data/reports/kinetic-seeds.md");
+    CHECK(quotes[0].anchor == "closed");
+    CHECK(quotes[0].content == "| a | b |\n|---|---|\n| 1 | 2 |\n");
+    CHECK(quotes[1].fault.find("followed at once by the quoted lines") !=
+          std::string::npos);
+    CHECK(quotes[2].fault.find("a malformed marker") != std::string::npos);
+    // The real section is a table that the made-up one is not.
+    const Expected expected = expected_report(quotes[0]);
+    REQUIRE(expected.text);
+    CHECK(expected.text->rfind("| η |", 0) == 0);
+    CHECK(*expected.text != quotes[0].content);
+    Quote missing = quotes[0];
+    missing.anchor = "no-such-section";
+    CHECK(expected_report(missing).why_not.find("has no line") != std::string::npos);
+  }
+
   TEST_CASE("lessons: the block rule finds a cpp or text block that nothing checks") {
     // This test proves that the next one can fail: a made-up lesson with
     // a quoted block of each kind, a block that says why it is not checked,
@@ -691,6 +866,75 @@ TEST_SUITE("lessons") {
     CHECK_MESSAGE(problems.empty(), "quoted blocks:" << joined(problems));
   }
 
+  TEST_CASE("lessons: the form rule finds retired words, stray quotes and long lessons") {
+    // This test proves that the next one can fail: a made-up lesson that
+    // breaks each rule once, and one that keeps them all.
+    const std::vector<std::string> good = {
+        "# 4. A lesson",                                           // 1
+        "Pair collisions per ball, and a ball's column of R.",     // 2
+        "",                                                        // 3
+        "> **Aside: the last-bit trap.** A pair that approaches",  // 4
+        "> at 1e-16 of its speed.",                                // 5
+        "",                                                        // 6
+        "```text",                                                 // 7
+        "> a quote inside a fence is not a block quote",           // 8
+        "```",                                                     // 9
+    };
+    CHECK(lesson_form_problems("lessons/4-a-lesson.md", good).empty());
+
+    const std::vector<std::string> bad = {
+        "Earlier versions of this lesson said so.",             // 1
+        "The table, before issue 21, was slower (issue #12).",  // 2
+        "after 10 collisions of two balls a ball",              // 3
+        "12 collision a ball per unit time",                    // 4
+        "a row of R is a Ball; the ball's row is written",      // 5
+        "> A note that is no aside.",                           // 6
+        "",                                                     // 7
+        "> **Aside: code.** Here:",                             // 8
+        "> ```cpp",                                             // 9
+    };
+    const std::vector<std::string> problems = lesson_form_problems("lessons/4-x.md", bad);
+    const auto says = [&](const std::string& what) {
+      return std::any_of(problems.begin(), problems.end(),
+                         [&](const std::string& p) { return p.rfind(what, 0) == 0; });
+    };
+    CHECK(says("1: 'Earlier versions'"));
+    CHECK(says("2: 'before issue'"));
+    CHECK(says("2: 'issue 21'"));
+    CHECK(says("3: 'collisions of two balls a ball'"));
+    CHECK(says("4: 'collision a ball'"));
+    CHECK(says("5: 'row of R'"));
+    CHECK(says("5: 'ball's row'"));
+    CHECK(says("6: a block quote that is not an aside"));
+    CHECK(says("9: a fenced block inside a block quote"));
+    CHECK_FALSE(says("8:"));  // a well-formed aside
+
+    // Length: a numbered lesson of 501 lines is too long, 500 is not; the
+    // README and the exercises are not numbered lessons.
+    const std::vector<std::string> long_lesson(most_lesson_lines + 1, "text");
+    const std::vector<std::string> full_lesson(most_lesson_lines, "text");
+    CHECK(lesson_form_problems("lessons/11-memory.md", long_lesson).size() == 1);
+    CHECK(lesson_form_problems("lessons/11-memory.md", full_lesson).empty());
+    CHECK(lesson_form_problems("lessons/README.md", long_lesson).empty());
+    CHECK(lesson_form_problems("lessons/exercises/01-x/instructions.md", long_lesson)
+              .empty());
+  }
+
+  TEST_CASE(
+      "lessons: no lesson uses a retired phrase, every block quote is an aside, and no "
+      "lesson is over 500 lines") {
+    // Applies to every lesson, those still being split included: a lesson
+    // listed here is one to shorten or reword, not an exception.
+    std::vector<std::string> problems;
+    for (const std::string& lesson : lesson_files()) {
+      for (const std::string& problem :
+           lesson_form_problems(lesson, lines_of(read_file(source_path(lesson))))) {
+        problems.push_back(fmt::format("{}:{}", lesson, problem));
+      }
+    }
+    CHECK_MESSAGE(problems.empty(), "the lessons' form:" << joined(problems));
+  }
+
   TEST_CASE("lessons: the lessons named by lessons/README.md and by the stages exist") {
     std::vector<std::string> problems;
     const auto exists = [](const std::string& relative) {
@@ -711,7 +955,9 @@ TEST_SUITE("lessons") {
           "lessons/3-screen-preparation.md", "lessons/4-first-collision.md",
           "lessons/5-new-coordinates.md", "lessons/6-output.md",
           "lessons/7-model-control.md", "lessons/8-errata.md",
-          "lessons/9-time-reversal.md", "lessons/10-scaling.md"}) {
+          "lessons/9-time-reversal.md", "lessons/10-scaling.md",
+          "lessons/12-statistics-screen.md", "lessons/13-box-and-bulk.md",
+          "lessons/14-error-bars.md", "lessons/15-chaos.md"}) {
       if (named.count(lesson) == 0)
         problems.push_back(fmt::format("lessons/README.md does not name {}", lesson));
     }

@@ -1,6 +1,6 @@
 // Tests for the tangent dynamics and the Lyapunov exponent
 // (stages/beyond/tangent_dynamics.*, lyapunov.*, lyapunov_screen.*;
-// lessons/12-chaos.md).
+// lessons/15-chaos.md).
 //
 // Two independent checks of the linearised collision map, both through the
 // project's own stages 4 and 5, never through a second copy of the formulas:
@@ -255,7 +255,7 @@ TEST_SUITE("lyapunov") {
   // are at most ~10 here, its curvature like them: ~1e-11) and by the
   // rounding of states of size ~40 (ulp 7e-15) over 2h: ~1e-8. 1e-6 is far
   // above both and far below what a wrong term gives (order 1: the breaks
-  // tried in lesson 12 missed by 0.1 to 10).
+  // tried in lesson 15 missed by 0.1 to 10).
   constexpr double fd_tolerance = 1e-6;
   constexpr double fd_step = 1e-6;
 
@@ -332,7 +332,7 @@ TEST_SUITE("lyapunov") {
       // scene and the crowd); their windows differ (the twins start 20
       // samples later, from their own random direction), so agreement
       // within one error of the tangent value is the fair demand. Both turn
-      // terms with the wrong sign (lesson 12) moved it by 2.0 of its errors
+      // terms with the wrong sign (lesson 15) moved it by 2.0 of its errors
       // in the default scene (few collisions of two balls), 23 in the crowd
       // and 49 in the dense gas.
       CHECK(std::fabs(e.twins.value - e.tangent.value) < e.tangent.error);
@@ -421,7 +421,7 @@ TEST_SUITE("lyapunov") {
     CHECK(names.back() == "lyapunov_error");
     const double lambda = std::stod(last[last.size() - 2]);
     const double error = std::stod(last.back());
-    // The crowd's exponent, 0.134 +- 0.001 over T = 50000 (lesson 12): at
+    // The crowd's exponent, 0.134 +- 0.001 over T = 50000 (lesson 15): at
     // T = 5000 within a few of its own errors of that, and known to 5 %.
     CHECK(std::fabs(lambda - 0.134) < 5 * error + 0.002);
     CHECK(error > 0);

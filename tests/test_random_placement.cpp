@@ -166,7 +166,7 @@ TEST_SUITE("random-placement") {
     const gas::Gas other =
         parse("a 1\nT0 1\nA1 40\nA2 20\nball 2 2 0 0\nlattice 10 8 2.5\n");
     CHECK(other.balls[1].vx != g.balls[1].vx);
-    // The dense scenes of lesson 11: 64 x 64 at area fraction 0.5.
+    // The dense scenes of lesson 13: 64 x 64 at area fraction 0.5.
     const gas::Gas dense = gas::read_scene_file(GAS_SOURCE_DIR "/data/eos-0.5.scene");
     CHECK(dense.balls.size() == 4096);
     CHECK(dense.balls[64].y > dense.balls[0].y);  // row by row

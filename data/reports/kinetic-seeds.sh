@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# The statistics' seed tables (beyond the article): do the error bars hold,
-# and does the theory of the same thing agree? Runs build/gas itself, as a
-# process, on seeds nobody tuned on:
+# The statistics' seed tables (beyond the article; lessons 13 and 14): do the
+# error bars hold, and does the theory of the same thing agree? Runs build/gas
+# itself, as a process, on seeds nobody tuned on:
 #
 #   bash data/reports/kinetic-seeds.sh [GAS] > data/reports/kinetic-seeds.md
+#   SECTIONS=eos bash data/reports/kinetic-seeds.sh > data/reports/equation-of-state.md
 #
-# Three sections (SECTIONS="theory spread closed", the default, runs all):
+# Four sections (SECTIONS="theory spread closed", the default, runs three;
+# SECTIONS=eos the fourth); each table follows a line
+# '<!-- section: NAME -->', which the lessons quote (lessons/README.md, "How
+# the lessons quote"):
 #
 # theory: every figure of --csv that has a theory (every column x with an
 #   x_theory) beside it, normalised by the combined error: over the seeds
@@ -20,7 +24,8 @@
 #   scenes like data/large-10000.scene (10000 balls at eta = 0.3 at random
 #   places) to T = 1500 (LARGE_SEEDS, default 51 to 58). And the warm-up: on
 #   the lattice starts, Z - Z_theory over the first 200 time units of
-#   averages against the whole run.
+#   averages against the whole run. Sections theory-lattice, theory-large
+#   (a row per seed) and theory (the root mean squares of both).
 # spread: are the errors honest where a student reads them? 40 gases like
 #   data/large-1000.scene (`random 1000 SEED 1`, SPREAD_SEEDS, default 201
 #   to 240) to T = 12000; at T = 150, 400, 1000, 3000 and 12000, for each of
@@ -31,7 +36,7 @@
 #   square, over n - 1; about 1 for honest errors: 1.04 to 1.07 for
 #   Student's t of 16 to 31 batches, within some 0.15 over 40 seeds), and
 #   how many seeds show no error yet.
-# closed: the closed box's 1/N (kinetic_theory.hpp, fixed_count_shift):
+# closed: the closed box's 1/N (kinetic_theory.hpp, fixed_count_shift; lesson 13):
 #   lattice gases of N = 256 balls (CLOSED_SEEDS_256, default 301 to 340)
 #   and N = 1024 (CLOSED_SEEDS_1024, default 401 to 424) at eta = 0.1, 0.2,
 #   0.3, 0.4, 0.45, every speed 1, to T = 12000: the mean of Z_deviation over
@@ -39,10 +44,16 @@
 #   should be within 3 of them of zero, and the mean of (Z - Z_open) /
 #   Z_open, Z_open the open bulk's reference at eta_int (Z_theory less
 #   Z_fixed_N_shift), beside the shift the formula predicts.
+# eos: the equation of state of lesson 13: data/eos-0.1.scene, eos-0.3 and
+#   eos-0.5 (4096 balls on a lattice) to T = 2000, 4000, 2000; the last row
+#   of each --csv: Z, its theory for N balls, their difference sample by
+#   sample with its error, Henderson's, the box's two Z's (section eos); and
+#   at the walls, g(2a+) against its reference, kT n at the walls' middles
+#   against the push there, the whole walls' push, the bulk's (eos-walls).
 #
 # GAS: the program (default build/gas). Two runs at a time (the machine may
 # be shared); on an idle machine some 3 CPU-minutes for theory, 4 for
-# spread, 16 for closed.
+# spread, 16 for closed, half a minute for eos.
 set -euo pipefail
 gas=${1:-build/gas}
 sections=${SECTIONS:-"theory spread closed"}
@@ -92,6 +103,12 @@ has() { case " $sections " in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
       done
     done
   fi
+  if has eos; then
+    for e in 0.1:2000 0.3:4000 0.5:2000; do
+      cp "data/eos-${e%%:*}.scene" "$tmp/eos-${e%%:*}.scene"
+      echo "eos-${e%%:*} ${e##*:}"
+    done
+  fi
 } | xargs -P 2 -n 2 sh -c '"$0" "$1/$2.scene" --until "$3" --mode none --csv "$1/$2.csv"' \
   "$gas" "$tmp"
 
@@ -103,9 +120,10 @@ table() {
   local kind=$1 title=$2 seeds=$3
   echo "### $title"
   echo
+  echo "<!-- section: theory-$kind -->"
   for s in $seeds; do
     echo "$tmp/$kind-$s.csv"
-  done | xargs awk -F, -v window=200 '
+  done | xargs awk -F, -v window=200 -v title="$title" -v summary="$tmp/summary-$kind" '
     function num(v) { return (v == "nan" || v == "-nan" || v == "") ? "nan" : v + 0 }
     FNR == 1 {
       if (NR == 1) {
@@ -158,9 +176,15 @@ table() {
       print head; print rule
       for (r = 1; r <= runs; ++r) print row[r]
       line = "| **root mean square** | |"
-      for (p = 1; p <= pairs; ++p)
+      short = "| " title " |"; names_line = "| state |"; rule_line = "|---|"
+      for (p = 1; p <= pairs; ++p) {
         line = line (known[p] ? sprintf(" **%.2f** |", sqrt(zz[p] / known[p])) : " - |")
+        short = short (known[p] ? sprintf(" %.2f |", sqrt(zz[p] / known[p])) : " no error |")
+        names_line = names_line " " names[p] " |"; rule_line = rule_line "---|"
+      }
       print line
+      print names_line > (summary ".head"); print rule_line > (summary ".head")
+      print short > summary
       line = "| mean | |"
       for (p = 1; p <= pairs; ++p) line = line (known[p] ? sprintf(" %+.2f |", zs[p] / known[p]) : " - |")
       print line
@@ -261,10 +285,12 @@ closed_table() {
   echo
 }
 
+command="bash data/reports/kinetic-seeds.sh"
+if [ "$sections" != "theory spread closed" ]; then command="SECTIONS=\"$sections\" $command"; fi
 echo "# The statistics' errors and theories across seeds"
 echo
-echo "Generated by \`bash data/reports/kinetic-seeds.sh\` (build/gas as processes;"
-echo "sections: $sections). The errors are batch means over 16 to 31 batches,"
+echo "Generated by \`$command\` (build/gas as processes)."
+echo "The errors are batch means over 16 to 31 batches,"
 echo "known once the batches are as long as the table's heat time (for the"
 echo "figures that follow it) and Jonsson's test sees them uncorrelated"
 echo "(stages/beyond/blocking.hpp)."
@@ -279,6 +305,12 @@ if has theory; then
   echo
   table lattice "1024 balls on a lattice at η = 0.5, T = $lattice_until" "$lattice_seeds"
   table large "10000 balls at random places at η = 0.3 (large-10000 with other seeds), T = $large_until" "$large_seeds"
+  echo "### Both states: the root mean squares"
+  echo
+  echo "<!-- section: theory -->"
+  head -2 "$tmp/summary-lattice.head"
+  cat "$tmp/summary-lattice" "$tmp/summary-large"
+  echo
 fi
 if has spread; then
   echo "## The spread of each figure over seeds"
@@ -288,6 +320,7 @@ if has spread; then
   echo "seeds whose error is known (root mean square, over n − 1; honest errors"
   echo "give about 1), and how many seeds show no error yet."
   echo
+  echo "<!-- section: spread -->"
   spread_table "$spread_seeds" "150 400 1000 3000 12000"
 fi
 if has closed; then
@@ -298,5 +331,57 @@ if has closed; then
   echo "plus the shift of stages/beyond/kinetic_theory.hpp); Z_open is the open"
   echo "bulk's reference at the interior's density."
   echo
+  echo "<!-- section: closed -->"
   closed_table
+fi
+if has eos; then
+  echo "## The equation of state (lesson 13)"
+  echo
+  echo "data/eos-0.1.scene, eos-0.3.scene, eos-0.5.scene to T = 2000, 4000, 2000;"
+  echo "the last row of each --csv. Z_theory is the reference for a closed box of"
+  echo "4096 balls at η_int; Z − Z_theory is Z_deviation (sample by sample), with"
+  echo "its error, in errors σ; Z's own error and the box's wait for the table's"
+  echo "heat time (–)."
+  echo
+  echo "<!-- section: eos -->"
+  echo "| N/A | η_int | Z bulk | Z_theory | Z − Z_theory | Henderson | Z box: walls | Z box: virial |"
+  echo "|---|---|---|---|---|---|---|---|"
+  for eta in 0.1 0.3 0.5; do
+    awk -F, -v eta="$eta" '
+      function shown(v, e) { return (e == "nan" || e == "-nan") ? sprintf("%.5f", v) : sprintf("%.5f ± %.5f", v, e) }
+      NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+      { last = $0 }
+      END {
+        split(last, f, ",")
+        d = f[c["Z_deviation"]]; de = f[c["Z_deviation_error"]]
+        printf "| %s | %.5f | %s | %.5f | %+.5f ± %.5f (%+.1f σ) | %.5f | %s | %s |\n", eta,
+          f[c["eta_interior"]], shown(f[c["Z"]], f[c["Z_error"]]), f[c["Z_theory"]], d, de, d / de,
+          f[c["Z_henderson"]], shown(f[c["Z_box_walls"]], f[c["Z_box_walls_error"]]),
+          shown(f[c["Z_box_virial"]], f[c["Z_box_virial_error"]])
+      }' "$tmp/eos-$eta.csv"
+  done
+  echo
+  echo "At the walls, the same runs: g(2a+) and its reference at η_int; kT n(contact)"
+  echo "at the walls' middles against the push on them (the contact theorem: kT n"
+  echo "less the push, in errors of kT n); the push on the whole walls; the bulk's"
+  echo "pressure, the reference for N balls in the strips in front of the middles."
+  echo
+  echo "<!-- section: eos-walls -->"
+  echo "| N/A | g(2a+) | reference g(2a) | kT n at the walls' middles | P on the walls' middles | contact theorem | P on the whole walls | bulk P |"
+  echo "|---|---|---|---|---|---|---|---|"
+  for eta in 0.1 0.3 0.5; do
+    awk -F, -v eta="$eta" '
+      function shown(v, e) { return (e == "nan" || e == "-nan") ? sprintf("%.5f", v) : sprintf("%.5f ± %.5f", v, e) }
+      NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+      { last = $0 }
+      END {
+        split(last, f, ",")
+        k = f[c["wall_contact_pressure"]]; ke = f[c["wall_contact_pressure_error"]]; p = f[c["pressure"]]
+        printf "| %s | %s | %.5f | %s | %s | %+.1f σ | %s | %.5f |\n", eta,
+          shown(f[c["g_contact"]], f[c["g_contact_error"]]), f[c["g_contact_theory"]],
+          shown(k, ke), shown(p, f[c["pressure_error"]]), (k - p) / ke,
+          shown(f[c["pressure_box"]], f[c["pressure_box_error"]]), f[c["pressure_theory"]]
+      }' "$tmp/eos-$eta.csv"
+  done
+  echo
 fi

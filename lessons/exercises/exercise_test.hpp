@@ -70,8 +70,8 @@ inline std::string digits(double value) {
   return fmt::format("{:.17g}", value);
 }
 
-// A ball as its row of R: {x, y, vx, vy, since}, to 17 digits.
-inline std::string row(const Ball& ball) {
+// A ball as its column of R: {x, y, vx, vy, since}, to 17 digits.
+inline std::string column_of_r(const Ball& ball) {
   return fmt::format("{{{}, {}, {}, {}, {}}}", digits(ball.x), digits(ball.y),
                      digits(ball.vx), digits(ball.vy), digits(ball.since));
 }
@@ -83,7 +83,7 @@ inline std::string describe(const Gas& gas) {
                   gas.balls.size(), gas.balls.size() == 1 ? "" : "s", digits(gas.time),
                   digits(gas.radius), digits(gas.width), digits(gas.height));
   for (std::size_t i = 0; i < gas.balls.size(); ++i)
-    text += fmt::format("\n    ball {}: {}", i + 1, row(gas.balls[i]));
+    text += fmt::format("\n    ball {}: {}", i + 1, column_of_r(gas.balls[i]));
   return text;
 }
 

@@ -12,7 +12,7 @@
 // O(log n) memory. From the levels it gives the standard error of the mean by
 // the rule below, and says "not known" (NaN) until the rule can be applied.
 // Article: none; the article averages nothing. Everything here is beyond it.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/14-error-bars.md
 //
 // Why blocks: for a correlated series the naive error sqrt(s^2 / n) is wrong
 // by the square root of the statistical inefficiency g = 1 + 2 sum of the
@@ -39,7 +39,7 @@
 //    caller from what it knows of its samples; 1 unless set). A figure of a
 //    gas in a box wanders with the box's slowest motions, heat flowing
 //    between the middle of the table and its edges, whose correlation is
-//    too faint to see in the run itself (lesson 11, "Errors that hold"): the
+//    too faint to see in the run itself (lesson 14): the
 //    statistics set it from the table's heat time (beyond/gas_statistics).
 // 3. Known only once the batches look uncorrelated: M. Jonsson's test
 //    ("Standard error estimation by an automated blocking method", Phys.

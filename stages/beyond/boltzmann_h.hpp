@@ -14,7 +14,7 @@
 // with p_i = 0 adds nothing.
 // Article: none; the article shows no distributions. Everything here is
 // beyond it.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/12-statistics-screen.md
 //
 // Why this is Boltzmann's H. Boltzmann's H = integral of f ln f over the
 // velocity plane (f the density of velocities). For a distribution that is the

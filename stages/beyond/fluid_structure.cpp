@@ -1,5 +1,5 @@
 // The structure of the fluid. See beyond/fluid_structure.hpp and
-// lessons/11-kinetic-theory.md.
+// lessons/13-box-and-bulk.md.
 #include "beyond/fluid_structure.hpp"
 
 #include <fmt/format.h>

@@ -14,7 +14,7 @@
 // of every event; the whole curves (out to r = 5a and d = 10a) are kept only
 // when --structure asks for them.
 // Article: none; the article's screen shows no structure. Beyond it.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/13-box-and-bulk.md
 //
 // Assumptions: one radius a; the interior is a rectangle of centres well
 // away from the walls (the statistics' interior), and the walls' strips are
@@ -37,7 +37,7 @@ inline constexpr double structure_bin_radii = 0.05;
 // contact_bins bins, 0 ... 0.5a from contact. g(r) is smooth beyond contact
 // but curves: at eta = 0.5 the straight line through the first two bins is
 // 0.17 % low, a parabola through 6 bins 0.13 %, this cubic 0.02 %, and it
-// has less noise than either (lesson 11).
+// has less noise than either (lesson 14).
 inline constexpr int contact_bins = 10;
 inline constexpr int contact_fit_degree = 3;
 // How far the curves of --structure reach: g(r) to r = 5a, where it is 1
@@ -90,7 +90,7 @@ class FluidStructure {
   const BlockingAnalysis& wall_contact_density() const { return wall_contact_; }
   // g(2a+) less the reference's g(2a) at the snapshot's own interior
   // density, per snapshot: what the interior's wandering density moves in
-  // both cancels (like Z's deviation, lesson 11).
+  // both cancels (like Z's deviation, lesson 14).
   const BlockingAnalysis& pair_contact_minus_theory() const {
     return pair_contact_minus_theory_;
   }

@@ -1,5 +1,5 @@
 // The measured side of the statistics screen. See beyond/gas_statistics.hpp
-// and lessons/11-kinetic-theory.md.
+// and lessons/13-box-and-bulk.md.
 #include "beyond/gas_statistics.hpp"
 
 #include <algorithm>
@@ -75,7 +75,7 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   // interior_margin_radii a along each of the two walls (its layers by the
   // wall are left out with the margin). The push on a wall's middle follows
   // the pressure of the gas just in front of it, slow sound waves included;
-  // the interior as a whole averages those waves away (lesson 11).
+  // the interior as a whole averages those waves away (lesson 14).
   const double strip = std::min(margin, (interior_.x_max - interior_.x_min) / 4);
   beside_left_ = {interior_.x_min, interior_.x_min + strip, interior_.y_min,
                   interior_.y_max};
@@ -320,7 +320,7 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
   // inside. (The interior's kT is the box's on average, but it wanders
   // slowly, heat crossing the table, and its density with it: measured at
   // its own kT the interior's Z follows its own eta, and the difference from
-  // the theory at eta_int loses that slow wandering; lesson 11.)
+  // the theory at eta_int loses that slow wandering; lesson 14.)
   const double a2 = radius_ * radius_;
   const double eta = s.interior_time / t / interior_.area() * std::numbers::pi * a2;
   const double kT_inside = s.interior_energy / (2 * s.interior_time);

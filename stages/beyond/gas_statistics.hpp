@@ -12,7 +12,7 @@
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas, the mean speed for example"); all the rest is
 // beyond the article.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/13-box-and-bulk.md; its error bars: lessons/14-error-bars.md
 //
 // Assumptions: unit mass and k = 1 (kT = E / N); the energy is fixed (the
 // hook is the only way velocities change, besides B, which keeps speeds).
@@ -53,12 +53,12 @@ struct Average {
 // the mean speed needs to cross the table (one to three passes of sound, from
 // eta = 0.1 to 0.5): in collisions a ball, the table's longer side over the
 // mean free path of kinetic theory at N / (A1 A2), L / lambda, and never fewer
-// than fewest_warm_up_collisions (the speeds' own relaxation; lesson 11). No
+// than fewest_warm_up_collisions (the speeds' own relaxation; lesson 14). No
 // warm-up for one ball: nothing relaxes.
 inline constexpr long long fewest_warm_up_collisions = 10;
 long long warm_up_collisions_a_ball(const Gas& gas);
 // The interior: centres at least this many radii from every wall. Density
-// oscillations at a wall die out within a few diameters (lesson 11).
+// oscillations at a wall die out within a few diameters (lesson 13).
 inline constexpr double interior_margin_radii = 8;
 
 // The figures measured since the averages started, as of one moment.

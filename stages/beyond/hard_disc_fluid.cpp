@@ -1,5 +1,5 @@
 // The hard-disc fluid's equation of state (beyond the article). See
-// beyond/hard_disc_fluid.hpp and lessons/11-kinetic-theory.md.
+// beyond/hard_disc_fluid.hpp and lessons/13-box-and-bulk.md.
 //
 // Where the numbers come from, and what was checked.
 //

@@ -13,7 +13,7 @@
 // eta = 0.67 ... 0.70 (within 0.06 %); see hard_disc_fluid.cpp.
 // Article: none; the article ("Gas on the display", Kvant 1989) predicts no
 // pressure. Everything here is beyond it.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/13-box-and-bulk.md
 //
 // The reference (sources checked, and how, in hard_disc_fluid.cpp):
 // J. Kolafa and M. Rottner, "Simulation-based equation of state of the hard

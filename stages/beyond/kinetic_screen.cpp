@@ -36,7 +36,7 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   if (!k.many_balls) return k;
   const double eta = m.interior_area_fraction.value;
   const double eta_error = m.interior_area_fraction.error;
-  // kT: the interior's own (the box's on average; lesson 11).
+  // kT: the interior's own (the box's on average; lesson 13).
   const double kT = m.interior_kT.value, a = gas.radius, pi = std::numbers::pi;
   // The reference for a closed box of N balls (kinetic_theory.hpp): the
   // open bulk's Z shifted by fixed_count_shift, Enskog's rate by its factor.
@@ -50,7 +50,7 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   // P = Z n kT, n = eta / (pi a^2): dP / d eta = (Z + eta Z') kT / (pi a^2);
   // for the push on the walls' middles, of the gas in front of them: the
   // strips of the interior beside those middles, at their own eta and kT
-  // (their slow sound waves push on the middles too; lesson 11).
+  // (their slow sound waves push on the middles too; lesson 14).
   const double eta_beside = m.beside_walls_eta.value, kT_beside = m.beside_walls_kT.value;
   const double z_beside = fixed_count_compressibility(eta_beside, balls);
   k.pressure_theory = {

@@ -8,7 +8,7 @@
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas, the mean speed for example"). The theory is beyond
 // the article.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/12-statistics-screen.md
 //
 // Assumptions: as for beyond/kinetic_theory.hpp (unit mass, k = 1).
 #pragma once
@@ -56,8 +56,8 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
 // The statistics screen: the figures at fixed places inside the border, each
 // beside its prediction, and under them the histogram of speeds with the
 // Maxwell-Boltzmann curve, as far as the screen has room. `more_lines`, from
-// other observers (the Lyapunov exponent, lesson 12), follow the figures as
-// far as they leave the histogram room (all of them from 26 rows up).
+// other observers (the Lyapunov exponent, lesson 15), follow the figures as
+// far as they leave the histogram room (both of the exponent's from --rows 30 up).
 void draw_kinetic_figures(TextScreen& screen, const Figures& figures,
                           const KineticFigures& kinetic,
                           const std::vector<std::string>& more_lines = {});

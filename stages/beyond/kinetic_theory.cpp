@@ -1,5 +1,5 @@
 // Kinetic theory's predictions. See beyond/kinetic_theory.hpp and
-// lessons/11-kinetic-theory.md for where each formula comes from.
+// lessons/12-statistics-screen.md for where each formula comes from.
 #include "beyond/kinetic_theory.hpp"
 
 #include <algorithm>
@@ -11,7 +11,7 @@
 
 namespace gas {
 
-// [anchor: kinetic-formulas]
+// [anchor: maxwell-speeds]
 // 2D Maxwell-Boltzmann (unit mass, k = 1): a velocity is two independent
 // normal components of variance kT, so its speed has the Rayleigh density
 // f(v) = (v / kT) exp(-v^2 / (2 kT)), mean sqrt(pi kT / 2), mean square 2 kT.
@@ -22,6 +22,7 @@ double maxwell_density(double speed, double kT) {
 double maxwell_fraction_below(double speed, double kT) {
   return -std::expm1(-speed * speed / (2 * kT));
 }
+// [/anchor: maxwell-speeds]
 
 // [anchor: fixed-energy]
 // N balls of unit mass in a box, total kinetic energy E fixed (the walls do
@@ -44,6 +45,7 @@ double fixed_energy_mean_speed(std::size_t balls, double kT) {
 }
 // [/anchor: fixed-energy]
 
+// [anchor: henderson]
 // D. Henderson, "A simple equation of state for hard discs", Molecular
 // Physics 30, 971 (1975): Z = P A / (N kT) = (1 + eta^2 / 8) / (1 - eta)^2.
 // Against the reference (beyond/hard_disc_fluid.hpp) it is within 0.03 % up
@@ -59,7 +61,7 @@ double henderson_compressibility(double eta) {
 double henderson_contact_value(double eta) {
   return (1 - 7 * eta / 16) / ((1 - eta) * (1 - eta));
 }
-// [/anchor: kinetic-formulas]
+// [/anchor: henderson]
 
 // [anchor: enskog]
 // Enskog's collision rate per ball in 2D: a ball meets the others at contact

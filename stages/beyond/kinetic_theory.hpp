@@ -9,11 +9,11 @@
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas, the mean speed for example"). The theory is beyond
 // the article.
-// Lesson: lessons/11-kinetic-theory.md
+// Lesson: lessons/12-statistics-screen.md; Henderson's: lessons/13-box-and-bulk.md
 //
 // Assumptions: unit mass and k = 1, so kT is an energy per ball (in 2D,
 // E = N kT); every formula is for equilibrium and for the bulk fluid, far
-// from any wall (the measured side compares like with like: lesson 11).
+// from any wall (the measured side compares like with like: lesson 13).
 #pragma once
 
 #include <cstddef>
@@ -40,7 +40,7 @@ struct KineticTheory {
 // The predictions of the bulk fluid (its equation of state, Enskog's rate)
 // hold for a gas of many balls: with N balls each ball has N - 1 partners,
 // not N, and the box's walls take their share, corrections of order 1 / N
-// that runs of a few balls resolve (lesson 11). Below this many balls the
+// that runs of a few balls resolve (lesson 14). Below this many balls the
 // screen says so instead of showing a number.
 inline constexpr std::size_t kinetic_theory_fewest_balls = 100;
 
@@ -58,7 +58,7 @@ double maxwell_fraction_below(double speed, double kT);
 // The mean speed of one of N balls whose total kinetic energy E = N kT is
 // fixed (unit mass; walls, so the momentum is not): <v> = sqrt(2 N kT)
 // Gamma(3/2) Gamma(N) / Gamma(N + 1/2), which tends to Maxwell's
-// sqrt(pi kT / 2) as N grows (lesson 11 derives it). NaN for N = 0.
+// sqrt(pi kT / 2) as N grows (lesson 12 derives it). NaN for N = 0.
 double fixed_energy_mean_speed(std::size_t balls, double kT);
 
 // Enskog's collision rate per ball per unit time of the bulk fluid at area
@@ -102,7 +102,7 @@ double fixed_count_rate_factor(double area_fraction, std::size_t balls);
 // the heat's diffusivity D = lambda <v> (lambda: Enskog's mean free path at
 // eta = N pi a^2 / (A1 A2), <v> = sqrt(pi kT / 2)). How long a figure of
 // the box must be averaged before its own samples can tell its error
-// (beyond/blocking.hpp, rule 2; lesson 11): some 370 time units for
+// (beyond/blocking.hpp, rule 2; lesson 14): some 370 time units for
 // data/large-1000.scene, 3000 for large-10000. NaN for fewer than 2 balls
 // or a gas at rest.
 double table_heat_time(const Gas& gas);

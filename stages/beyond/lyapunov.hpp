@@ -14,7 +14,7 @@
 // reaches a distance d after t = ln(d / eps) / lambda.
 // Article: none; lesson 9 shows what the exponent predicts, B failing after
 // some collisions. Everything here is beyond the article.
-// Lesson: lessons/12-chaos.md
+// Lesson: lessons/15-chaos.md
 //
 // Assumptions: unit mass; a collision costs O(1) (the changes fly lazily,
 // like the balls' rows); each renormalisation walks the balls once, and

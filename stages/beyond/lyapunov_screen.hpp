@@ -8,7 +8,7 @@
 // `lyapunov,lyapunov_error` (per unit model time).
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas"); the exponent is beyond the article.
-// Lesson: lessons/12-chaos.md
+// Lesson: lessons/15-chaos.md
 #pragma once
 
 #include <string>

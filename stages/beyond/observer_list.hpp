@@ -5,7 +5,7 @@
 // Lyapunov exponent too hangs this list there, which tells each of its
 // observers in turn.
 // Article: none (stage 7's hook is beyond the article too).
-// Lesson: lessons/12-chaos.md
+// Lesson: lessons/15-chaos.md
 #pragma once
 
 #include <utility>

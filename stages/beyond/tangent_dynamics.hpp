@@ -10,11 +10,11 @@
 // Lyapunov exponents of hard discs (C. Dellago, H. A. Posch and W. G. Hoover,
 // "Lyapunov instability in a system of hard disks in equilibrium and
 // nonequilibrium steady states", Phys. Rev. E 53, 1485 (1996)); the map is
-// derived in lesson 12 and checked by finite differences of stage 5 itself
+// derived in lesson 15 and checked by finite differences of stage 5 itself
 // (tests/test_lyapunov.cpp).
 // Article: none; the article's stage 5 carries out the collisions this
 // follows. Everything here is beyond it.
-// Lesson: lessons/12-chaos.md
+// Lesson: lessons/15-chaos.md
 //
 // Assumptions: unit mass, equal radii; the change of a ball is kept, like its
 // row of R, as of the moment `since` it was last written, so that a collision
@@ -50,7 +50,7 @@ void move_tangent_to(BallTangent& t, double time);
 // The reflection at a wall (K = 1: y flips; K = 2: x flips), for a change
 // written at the moment of the bounce: both dq and dp are reflected, because
 // the earlier or later bounce of the changed ball exactly makes up for the
-// wall's being reached sooner or later (lesson 12).
+// wall's being reached sooner or later (lesson 15).
 void reflect_tangent(BallTangent& t, CollisionKind kind);
 
 // The linearised collision map of two balls at contact, for changes written

@@ -146,7 +146,7 @@ class ConsoleRun {
     }
     // The Lyapunov exponent beside them, on the same hook, where it is shown
     // or written: the statistics screen or --csv, not --structure alone
-    // (lesson 12).
+    // (lesson 15).
     if ((options.drawn && options.mode == ScreenMode::stats) || options.csv_path) {
       lyapunov_.emplace(control_.gas);
       observers_.emplace(std::vector<CollisionObserver*>{&*statistics_, &*lyapunov_});
@@ -243,7 +243,7 @@ class ConsoleRun {
   }
 
   // Carries out the keys in `keys`; false once E is pressed. Beyond the
-  // article's keys, A restarts the statistics' averages (lesson 11).
+  // article's keys, A restarts the statistics' averages (lesson 14).
   bool press_all(const std::string& keys) {
     for (const char key : keys) {
       if ((key == 'A' || key == 'a') && statistics_) {
@@ -328,7 +328,7 @@ class ConsoleRun {
   RunOutputs outputs_;
   StepKeeps keeps_;  // what a display step keeps: the centres, the collisions
   std::optional<GasStatistics> statistics_;   // for --mode stats, --csv, --structure
-  std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 12)
+  std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 15)
   std::optional<ObserverList> observers_;     // both on stage 7's hook
   TextScreen screen_;
 };

@@ -5,7 +5,7 @@
 // keys — the keyboard, pressed without Enter; a script given with --keys, one
 // key per tick; and with --step, the line typed before each Enter — and the
 // loop asks this one object, whichever it is.
-// Lesson: lessons/7-model-control.md ("Keys in a terminal, and keys in a script")
+// Lesson: lessons/7-model-control.md ("Aside: the program around the loop")
 #pragma once
 
 #include <chrono>

@@ -1175,7 +1175,7 @@ int run(const Settings& settings) {
       "trusted horizon grows in proportion to the bits, and no precision makes it "
       "infinite.\n\n");
   // The horizon the Lyapunov exponent predicts, beside the one measured.
-  add("The factor is the largest Lyapunov exponent lambda (lesson 12), measured by "
+  add("The factor is the largest Lyapunov exponent lambda (lesson 15), measured by "
       "the stages with the tangent dynamics of `stages/beyond/lyapunov.hpp` "
       "(renormalisations shown; `lyapunov.csv`). Collisions a ball are counted as "
       "above: every collision of the gas (walls and pairs), over N. An error of one "
@@ -1261,7 +1261,7 @@ int run(const Settings& settings) {
       "again on the way back, e^(lambda t) eps: the prediction is the trusted "
       "horizon of section 2, ln(a / (100 eps)) / lambda collisions a ball for the "
       "stages' double (k counts collisions as section 2 does: every collision of the "
-      "gas over N; lesson 11 counts a collision of two balls for both, about twice "
+      "gas over N; lesson 12 counts a collision of two balls for both, about twice "
       "as many in the H-theorem scene). Measured: the largest k of the tables whose "
       "return error (stages, double) is below a hundredth of a radius, and the next "
       "k tried.\n\n"

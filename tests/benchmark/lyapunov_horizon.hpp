@@ -5,7 +5,7 @@
 // (stages/beyond/lyapunov.hpp); from lambda, per collision a ball, follows
 // how many collisions a ball an error of one unit in the last place of the
 // coordinates takes to grow to a hundredth of a radius, in float, double and
-// long double: ln(d / eps) / lambda (lessons/12-chaos.md). The report sets
+// long double: ln(d / eps) / lambda (lessons/15-chaos.md). The report sets
 // these beside the horizons it measures against the 113-bit run and by B.
 #pragma once
 

@@ -15,7 +15,7 @@ namespace gas {
 
 std::string scene_text([[maybe_unused]] const Gas& gas) {
   // TODO: the lines T, a, T0, A1, A2 and N, then one line
-  // "ball x y vx vy since" for every ball: its row as it is.
+  // "ball x y vx vy since" for every ball: its column of R as it is.
   return "";  // placeholder: an empty scene, which stage 2 refuses
 }
 

@@ -6,7 +6,7 @@
 //
 // Each test writes a gas with scene_text and reads the text back with the
 // project's own reader (stage 2: parse_scene_description, then build_gas),
-// then compares: the table, T0, T and every ball's row (x, y, vx, vy and
+// then compares: the table, T0, T and every ball's column of R (x, y, vx, vy and
 // since), bit for bit, because that is what "reads back exactly" means.
 #include <doctest/doctest.h>
 
@@ -77,13 +77,13 @@ TEST_SUITE("exercise-02") {
                {{odd.balls[0].x, odd.balls[0].y}, {odd.balls[1].x, odd.balls[1].y}});
   }
 
-  TEST_CASE("exercise-02 T and every row come back as they are with since") {
-    // T = 10. Ball 1's row was written at 4: (20, 15) is its centre at 4, at 10
-    // it is at (29, 12). Ball 2's row was written at 10. A checkpoint keeps the
-    // rows, not the centres at T (recomputing them rounds).
+  TEST_CASE("exercise-02 T and every column of R comes back as it is with since") {
+    // T = 10. Ball 1's column of R was written at 4: (20, 15) is its centre at 4, at 10
+    // it is at (29, 12). Ball 2's column was written at 10. A checkpoint keeps
+    // the columns of R, not the centres at T (recomputing them rounds).
     const gas::Gas now =
         gas::exercises::table({{20, 15, 1.5, -0.5, 4}, {5, 25, -1, 0.25, 10}}, 10);
-    INFO("write the line 'T 10' and each row as it is: 'ball x y vx vy since'");
+    INFO("write the line 'T 10' and each column of R as it is: 'ball x y vx vy since'");
     const gas::Gas read = read_back(gas::scene_text(now));
     check_same(read, now, {{20, 15}, {5, 25}});
     CHECK(read.time == 10);

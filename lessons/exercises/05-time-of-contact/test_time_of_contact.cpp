@@ -22,15 +22,15 @@ namespace {
 using gas::Ball;
 using gas::never;
 using gas::time_of_contact;
+using gas::exercises::column_of_r;
 using gas::exercises::digits;
 using gas::exercises::Draw;
-using gas::exercises::row;
 
 constexpr double diameter = 2;
 
 std::string call(const Ball& p, const Ball& q, double d) {
-  return fmt::format("time_of_contact(p {}, q {}, diameter {})", row(p), row(q),
-                     digits(d));
+  return fmt::format("time_of_contact(p {}, q {}, diameter {})", column_of_r(p),
+                     column_of_r(q), digits(d));
 }
 
 #define CHECK_CONTACT(p, q, d, wanted, relative) \
@@ -93,7 +93,7 @@ TEST_SUITE("exercise-05") {
   }
 
   TEST_CASE("exercise-05 touching or overlapping balls that approach collide now") {
-    // Both rows written at 3, the balls 2 apart (touching) or 1.5 apart (a
+    // Both columns of R written at 3, the balls 2 apart (touching) or 1.5 apart (a
     // hair inside each other, as round-off can leave them).
     INFO(
         "if they approach, the collision is due at once: at the balls' time 3, not in "
@@ -107,7 +107,7 @@ TEST_SUITE("exercise-05") {
 
   TEST_CASE(
       "exercise-05 balls written at different moments are compared at the later one") {
-    // p's row was written at 0 at x = 0, q's at 2 at x = 14. At 2 p is at
+    // p's column of R was written at 0 at x = 0, q's at 2 at x = 14. At 2 p is at
     // x = 2, 12 from q, and they close at 2: 2 apart at 2 + 10 / 2 = 7.
     INFO("take both centres at max(p.since, q.since) with centre_at (stage 1)");
     CHECK_CONTACT(Ball({0, 0, 1, 0, 0}), Ball({14, 0, -1, 0, 2}), diameter, 7, 0);
@@ -163,7 +163,7 @@ TEST_SUITE("exercise-05") {
     for (int m = 1; m <= 300; ++m) {
       // The contact: at time `when`, p's centre at (cx, cy) and q's one
       // diameter away in direction phi, w aimed within 1.2 radians of
-      // straight at p. Then each row is written back at its own `since`.
+      // straight at p. Then each column of R is written back at its own `since`.
       const double d = draw.magnitude(-0.3, 2);  // 0.5 to 100
       const double cx = draw.uniform(-100, 100), cy = draw.uniform(-100, 100);
       const double phi = draw.uniform(0, 2 * std::numbers::pi);

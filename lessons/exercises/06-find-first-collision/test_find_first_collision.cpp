@@ -56,7 +56,7 @@ bool check(const Outcome& outcome, double time, CollisionKind kind, int first, i
 }
 
 // The first collision as it must be, worked out in long double from the
-// rows, in the scan's order (each ball's walls, K = 1 then 2, then every
+// columns of R, in the scan's order (each ball's walls, K = 1 then 2, then every
 // pair), with the time of the runner-up: a gas whose two first events are
 // too close to tell apart in double is not a fair test.
 struct Expected {
@@ -141,9 +141,11 @@ TEST_SUITE("exercise-06") {
   }
 
   TEST_CASE("exercise-06 each ball flies on its own clock: since") {
-    INFO("time_to_wall counts from the moment the row was written: add ball.since");
-    // T = 2.5. Ball 1's row was written at 2, at (10, 20), moving up at 3:
-    // it reaches y = 29 at 2 + 9 / 3 = 5. Ball 2's row was written at 0, at
+    INFO(
+        "time_to_wall counts from the moment the column of R was written: add "
+        "ball.since");
+    // T = 2.5. Ball 1's column of R was written at 2, at (10, 20), moving up at 3:
+    // it reaches y = 29 at 2 + 9 / 3 = 5. Ball 2's column was written at 0, at
     // (30, 5), moving down at 1: it reaches y = 1 at 0 + 4 / 1 = 4, first.
     check(first_of(table({{10, 20, 0, 3, 2}, {30, 5, 0, -1, 0}}, 2.5)), 4,
           CollisionKind::horizontal_wall, 2, 0);
@@ -171,7 +173,7 @@ TEST_SUITE("exercise-06") {
 
   TEST_CASE("exercise-06 TC is never earlier than the present time T") {
     INFO("round-off can put an event a hair in the past: it is due now, TC = T");
-    // A row written at 9, its centre 1e-7 short of x = 39 and moving right:
+    // A column of R written at 9, its centre 1e-7 short of x = 39 and moving right:
     // it reached its limit at 9.0000001, but T is already 10.
     check(first_of(table({{39 - 1e-7, 15, 1, 0, 9}}, 10)), 10,
           CollisionKind::vertical_wall, 1, 0);
@@ -185,8 +187,8 @@ TEST_SUITE("exercise-06") {
     int tried = 0;
     for (int n = 1; n <= 300;) {
       // A table of a random size, the balls on a grid of cells at least 2a
-      // apart with a random offset in each cell, rows written at T or
-      // earlier (each row computed back from its centre at T).
+      // apart with a random offset in each cell, columns of R written at T
+      // or earlier (each computed back from its centre at T).
       gas::Gas gas;
       gas.radius = draw.uniform(0.5, 3);
       const int columns = draw.integer(2, 5), rows = draw.integer(1, 4);

@@ -23,8 +23,8 @@
 namespace {
 
 using gas::Ball;
+using gas::exercises::column_of_r;
 using gas::exercises::Draw;
-using gas::exercises::row;
 
 double dot(double ax, double ay, double bx, double by) {
   return ax * bx + ay * by;
@@ -38,8 +38,8 @@ struct Hit {
   Ball p, q;          // before
   Ball p_new, q_new;  // after your collide_balls
   std::string text() const {
-    return fmt::format("collide_balls(p {}, q {})\n  gave p {}, q {}", row(p), row(q),
-                       row(p_new), row(q_new));
+    return fmt::format("collide_balls(p {}, q {})\n  gave p {}, q {}", column_of_r(p),
+                       column_of_r(q), column_of_r(p_new), column_of_r(q_new));
   }
 };
 

@@ -4,7 +4,7 @@
 // passes against stages/stage5_new_coordinates.cpp. Don't change this file
 // to make a test pass: change your shift_time.cpp.
 //
-// The centres must be computed from the rows of R as centre_at does (stage
+// The centres must be computed from the columns of R as centre_at does (stage
 // 1), not by moving the old centres on: then they are the same doubles as
 // centre_at's, and the checks can ask for equality.
 #include <doctest/doctest.h>
@@ -21,7 +21,7 @@ namespace {
 
 using gas::Point;
 
-// Three balls in free flight, their rows written at different moments.
+// Three balls in free flight, their columns of R written at different moments.
 gas::Gas three_balls() {
   return gas::exercises::table(
       {{10, 10, 1, 0.5, 0}, {20, 15, -0.25, 1, 1.5}, {30.3, 5.7, 0.1, -0.3, 0.75}}, 2);
@@ -35,9 +35,9 @@ bool check_centres(const std::vector<Point>& centres, const gas::Gas& gas, doubl
                                           << gas.balls.size() << " balls");
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const Point wanted = gas::centre_at(gas.balls[i], time);
-    const std::string what =
-        fmt::format("{}[{}] of ball {} {} at T = {}", which, i, i + 1,
-                    gas::exercises::row(gas.balls[i]), gas::exercises::digits(time));
+    const std::string what = fmt::format("{}[{}] of ball {} {} at T = {}", which, i,
+                                         i + 1, gas::exercises::column_of_r(gas.balls[i]),
+                                         gas::exercises::digits(time));
     if (!CHECK_NUMBER(what + ": x", centres[i].x, wanted.x, 0) ||
         !CHECK_NUMBER(what + ": y", centres[i].y, wanted.y, 0))
       return false;
@@ -90,11 +90,12 @@ TEST_SUITE("exercise-08") {
     gas::Picture picture;
     for (const double t : {2.5, 3.0, 7.75}) gas::shift_time(gas, picture, t);
     INFO(
-        "the rows of R change only at collisions (stage 5's apply_collision), never in "
+        "the columns of R change only at collisions (stage 5's apply_collision), never "
+        "in "
         "shift_time");
     for (std::size_t i = 0; i < gas.balls.size(); ++i) {
-      const std::string what =
-          fmt::format("ball {}, {} before", i + 1, gas::exercises::row(before.balls[i]));
+      const std::string what = fmt::format("ball {}, {} before", i + 1,
+                                           gas::exercises::column_of_r(before.balls[i]));
       CHECK_NUMBER(what + ": x", gas.balls[i].x, before.balls[i].x, 0);
       CHECK_NUMBER(what + ": y", gas.balls[i].y, before.balls[i].y, 0);
       CHECK_NUMBER(what + ": since", gas.balls[i].since, before.balls[i].since, 0);
@@ -139,8 +140,8 @@ TEST_SUITE("exercise-08") {
                               "picture.old_centres");
       }
       for (std::size_t i = 0; i < gas.balls.size() && right; ++i) {
-        const std::string what = fmt::format("ball {}, {} before", i + 1,
-                                             gas::exercises::row(before.balls[i]));
+        const std::string what = fmt::format(
+            "ball {}, {} before", i + 1, gas::exercises::column_of_r(before.balls[i]));
         right =
             CHECK_NUMBER(what + ": x", gas.balls[i].x, before.balls[i].x, 0) &&
             CHECK_NUMBER(what + ": vx", gas.balls[i].vx, before.balls[i].vx, 0) &&

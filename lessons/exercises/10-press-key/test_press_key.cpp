@@ -102,14 +102,14 @@ TEST_SUITE("exercise-10") {
     CHECK_FALSE(control.stopped);
   }
 
-  TEST_CASE("exercise-10 B tells the observer before it rewrites the rows") {
-    // An observer that notes what the rows were when it was told.
+  TEST_CASE("exercise-10 B tells the observer before it rewrites the columns of R") {
+    // An observer that notes what the columns of R were when it was told.
     struct Listener final : gas::CollisionObserver {
       int told = 0;
-      std::vector<gas::Ball> rows;  // as they were when told
+      std::vector<gas::Ball> balls_then;  // as they were when told
       void before_rows_rewritten(const gas::Gas& gas) override {
         ++told;
-        rows = gas.balls;
+        balls_then = gas.balls;
       }
     } listener;
     Control control = three_balls();
@@ -118,12 +118,12 @@ TEST_SUITE("exercise-10") {
     gas::press_key(control, 'B');
     INFO("B must call control.observer->before_rows_rewritten(control.gas) once");
     CHECK(listener.told == 1);
-    INFO("... and before reverse_velocities: the observer must see the old rows");
-    REQUIRE(listener.rows.size() == before.size());
+    INFO("... and before reverse_velocities: the observer must see the old columns");
+    REQUIRE(listener.balls_then.size() == before.size());
     for (std::size_t i = 0; i < before.size(); ++i) {
       CAPTURE(i + 1);
-      CHECK(listener.rows[i].vx == before[i].vx);
-      CHECK(listener.rows[i].since == before[i].since);
+      CHECK(listener.balls_then[i].vx == before[i].vx);
+      CHECK(listener.balls_then[i].since == before[i].since);
     }
     // No other key tells it anything; and with no observer B still works.
     for (const char key : std::string("SR><0.x")) gas::press_key(control, key);

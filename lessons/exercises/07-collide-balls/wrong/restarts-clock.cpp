@@ -1,6 +1,6 @@
 // A wrong answer to exercise 07, kept so that CI proves the tests catch it.
 // The velocities are right, but it also sets both balls' `since` to 0, as
-// if a collision started their clocks again: their rows now say they were
+// if a collision started their clocks again: their columns of R now say they were
 // at x, y at time 0, and every later centre is computed from the wrong
 // moment.
 #include "stage5_new_coordinates.hpp"

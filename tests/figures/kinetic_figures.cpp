@@ -1,30 +1,37 @@
-// gas-figures: lesson 11 in pictures, from runs of build/gas.
+// gas-figures: the pictures of the statistics lessons, from runs of build/gas.
 //
 // Runs the program itself (build/gas, as a child process, two at a time),
 // reads the files it writes (--csv, --structure, --dump), and draws with
-// gnuplot (tests/benchmark/plots.hpp) five pictures for
-// lessons/11-kinetic-theory.md, with the numbers behind each as CSV:
+// gnuplot (tests/benchmark/plots.hpp) five pictures, each into the folder of
+// the lesson that shows it, with the numbers behind each as CSV:
 //
-//   eos.svg           the bulk's Z against the interior's area fraction,
-//                     0.05 ... 0.69, with error bars, against Kolafa-Rottner
-//                     and Henderson; and its relative difference from them
+// lesson-12/ (lessons/12-statistics-screen.md):
 //   h-theorem.svg     Boltzmann's H of the speeds against T, B pressed at
 //                     T = 10 and at T = 30 (Loschmidt: data/h-theorem.scene)
 //   speeds.svg        the distribution of speeds against 2D Maxwell-Boltzmann
 //                     (data/large-10000.scene, four dumps 50 apart)
+// lesson-13/ (lessons/13-box-and-bulk.md):
+//
+//   eos.svg           the bulk's Z against the interior's area fraction,
+//                     0.05 ... 0.69, with error bars, against Kolafa-Rottner
+//                     and Henderson; and its relative difference from
+//                     Kolafa-Rottner for a closed box of 1024 balls (the
+//                     fixed-N shift of beyond/kinetic_theory.hpp)
 //   pair-correlation.svg   g(r) at area fractions 0.1, 0.3, 0.5, 0.65 (--structure)
 //   wall-profile.svg  the density of centres beside a wall, same runs
 //
 // Every gas is 1024 balls of radius 1 on a 32 x 32 lattice, every speed 1
 // (kT = 1/2), or a scene of data/. The averages start at a restart (the key A,
 // pressed by --keys) after a quarter of the run: a warm-up in which a dense gas
-// started on a lattice relaxes (lesson 11), longer than the program's own.
+// started on a lattice relaxes (lesson 14), longer than the program's own.
 //
 // Usage:  gas-figures [--out DIR] [--smoke]
-//   --out     where to write (default: data/reports/lesson-11 of the source tree)
+//   --out     where to write: DIR/lesson-12 and DIR/lesson-13 (default: DIR is
+//             data/reports of the source tree)
 //   --smoke   runs a hundred times shorter, no pictures (the test suite runs this)
 // About a processor-minute; progress on standard error. Beyond the article.
-// Lesson: lessons/11-kinetic-theory.md ("Lesson 11 in pictures").
+// Lesson: lessons/12-statistics-screen.md, lessons/13-box-and-bulk.md
+// ("Lesson 13 in pictures").
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <unistd.h>
@@ -199,8 +206,8 @@ void equation_of_state(const fs::path& out, const fs::path& work, double scale,
   std::vector<Job> jobs = lattice_runs(eos_fractions, "eos", 1.5e6 * scale, work);
   run_all(jobs);
   std::ofstream table(out / "eos.csv");
-  table << "eta_nominal,eta_interior,Z,Z_deviation_error,Z_kolafa_rottner,Z_henderson,"
-           "collisions\n";
+  table << "eta_nominal,eta_interior,Z,Z_deviation_error,Z_kolafa_rottner,Z_fixed_N,"
+           "Z_henderson,collisions\n";
   Series measured{"measured (interior of 1024 balls)", {}, false, {}, ""};
   Series relative{"measured", {}, false, {}, ""};
   for (const double eta : eos_fractions) {
@@ -208,12 +215,15 @@ void equation_of_state(const fs::path& out, const fs::path& work, double scale,
     if (!row.contains("Z")) continue;
     // The error bar: that of Z - Z_ref(eta_int), taken sample by sample (Z's
     // own blocking error often has no plateau: it wanders with eta_int,
-    // lesson 11, "Errors that hold").
+    // lesson 14, "Errors that hold").
     const double e = row.at("eta_interior"), z = row.at("Z"),
                  error = row.at("Z_deviation_error");
-    const double reference = gas::hard_disc_fluid_compressibility(e);
-    table << fmt::format("{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.0f}\n", eta, e, z,
-                         error, reference, gas::henderson_compressibility(e),
+    // The reference for the closed box of 1024 balls (what Z_deviation is
+    // taken against), and the open bulk's beside it.
+    const double reference = gas::fixed_count_compressibility(e, lattice_balls);
+    table << fmt::format("{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.0f}\n", eta, e,
+                         z, error, gas::hard_disc_fluid_compressibility(e), reference,
+                         gas::henderson_compressibility(e),
                          row.at("wall_collisions") + row.at("ball_collisions"));
     measured.points.emplace_back(e, z);
     measured.errors.push_back(error);
@@ -231,15 +241,22 @@ void equation_of_state(const fs::path& out, const fs::path& work, double scale,
            curve("Henderson (1975)", 0, top, gas::henderson_compressibility)},
           "top left",
           ""};
+  // Each curve against Kolafa-Rottner for 1024 balls, in per cent.
+  auto against_closed_box = [](double (*z)(double)) {
+    return [z](double e) {
+      return 100 * (z(e) / gas::fixed_count_compressibility(e, lattice_balls) - 1);
+    };
+  };
   Panel difference{
-      "the same against Kolafa-Rottner",
+      "the same against Kolafa-Rottner for 1024 balls",
       "area fraction of the interior",
-      "Z / Z_KR - 1, %",
+      "Z / Z_KR,N - 1, %",
       false,
       false,
-      {relative, curve("Kolafa-Rottner", 0, top, [](double) { return 0.0; }),
-       curve("Henderson", 0, top,
-             [](double e) { return 100 * gas::henderson_relative_error(e); })},
+      {relative, curve("Kolafa-Rottner, N = 1024", 0, top, [](double) { return 0.0; }),
+       curve("Kolafa-Rottner, open bulk", 0, top,
+             against_closed_box(gas::hard_disc_fluid_compressibility)),
+       curve("Henderson", 0, top, against_closed_box(gas::henderson_compressibility))},
       "top left",
       "set yrange [-1:3]"};
   draw({out / "eos.svg",
@@ -437,7 +454,7 @@ void structure(const fs::path& out, const fs::path& work, double scale, bool smo
 }  // namespace
 
 int main(int argc, char** argv) {
-  fs::path out = fs::path(GAS_SOURCE_DIR) / "data" / "reports" / "lesson-11";
+  fs::path out = fs::path(GAS_SOURCE_DIR) / "data" / "reports";
   bool smoke = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -451,15 +468,18 @@ int main(int argc, char** argv) {
     }
   }
   const double scale = smoke ? 0.01 : 1;
-  fs::create_directories(out);
+  // Each picture in the folder of the lesson that shows it.
+  const fs::path screen = out / "lesson-12", bulk = out / "lesson-13";
+  fs::create_directories(screen);
+  fs::create_directories(bulk);
   const fs::path work =
       fs::temp_directory_path() / fmt::format("gas-figures-{}", getpid());
   fs::create_directories(work);
-  equation_of_state(out, work, scale, smoke);
-  h_theorem(out, work, smoke);
-  speeds(out, work, scale, smoke);
-  structure(out, work, scale, smoke);
+  equation_of_state(bulk, work, scale, smoke);
+  h_theorem(screen, work, smoke);
+  speeds(screen, work, scale, smoke);
+  structure(bulk, work, scale, smoke);
   fs::remove_all(work);
-  say("wrote " + out.string());
+  say("wrote " + screen.string() + " and " + bulk.string());
   return 0;
 }
