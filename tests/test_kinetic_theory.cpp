@@ -331,6 +331,12 @@ TEST_SUITE("kinetic-theory") {
           doctest::Approx(gas::fixed_count_shift(0.3, 256) / 4));
     CHECK(gas::fixed_count_shift(0.3, 0) == 0);
     CHECK(std::isnan(gas::fixed_count_shift(0.8, 256)));
+    // Near the fluid's end no shift: the open bulk's theory (at 0.69 the
+    // formula would give +0.08 for N = 256, the wrong sign, from a
+    // reference whose curvature has turned).
+    CHECK(gas::fixed_count_shift(0.6, 256) < 0);
+    CHECK(gas::fixed_count_shift(0.65, 256) == 0);
+    CHECK(gas::fixed_count_rate_factor(0.69, 256) == 1);
   }
 
   TEST_CASE("the table's heat time: a wavelength of the longer side over lambda <v>") {

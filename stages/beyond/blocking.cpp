@@ -111,7 +111,7 @@ int BlockingAnalysis::batch_level() const {
 
 // [anchor: error-rule]
 ErrorStatus BlockingAnalysis::status() const {
-  // 1. Batch means: 16 to 31 batches.
+  // 1. Batch means: fewest_blocks_ (16) to twice as many less one batches.
   const int batches = batch_level();
   if (batches < 0) return ErrorStatus::few_samples;
   const auto k = static_cast<std::size_t>(batches);

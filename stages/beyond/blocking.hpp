@@ -53,18 +53,22 @@
 //    below it (16 to 127 blocks): a level of a handful of blocks says
 //    nothing (with 2 blocks a term is always 1/8). The error is NaN while M
 //    exceeds chi-squared's 99 % quantile.
-//    Measured (tests/test_blocking.cpp, "the test's false alarms and power",
-//    2000 series each): on independent normal samples it blanks the error
-//    about 0.3 % of the time at any length from 16 samples on (chi-squared
-//    is conservative for so few blocks: M's 99 % point is some 9.5 against
-//    11.3). Its power: on AR(1) series x_{t+1} = phi x_t + noise, whose
-//    correlation time is tau = (1 + phi) / (2 (1 - phi)), it blanks the
-//    error almost always while a batch is shorter than about 2 tau (phi =
-//    0.9 at 300 samples: batches of 16, 9 times tau: 40 %; at 100 samples,
-//    batches of 4: 99 %), rarely once batches are 10 tau or longer; a
-//    straight ramp under noise as large as the ramp's whole rise is caught
-//    in 100 % of series of 256 samples. A slow drift buried in fast noise,
-//    like a gas's heat, it cannot see: hence rule 2.
+//    Measured (tests/test_blocking.cpp, "the test's false alarms and
+//    power", 2000 series each): on independent normal samples it blanks the
+//    error 0.2 % to 1.3 % of the time, at any length from 16 samples to
+//    10^4. On AR(1) series x_{t+1} = phi x_t + noise, correlation time tau =
+//    (1 + phi) / (2 (1 - phi)), it blanks nearly every error while a batch
+//    is a few tau long (phi = 0.5 at 100 samples, batches of 4 = 2.7 tau:
+//    97 %; phi = 0.9 at 300 and 1000 samples, batches of 16 and 32 = 1.7
+//    and 3.4 tau: 100 %) and few once it is ten or more (phi = 0.9 at 3000,
+//    128 = 13 tau: 13 %); the errors it lets through then scatter like
+//    Student's t (root mean square 1.02 to 1.10). Shorter still it can
+//    miss: at 16 samples, phi = 0.5 leaves 90 % of the errors, two times
+//    too small. A straight ramp under noise as large as its whole rise is
+//    caught in 60 % of series of 256 samples, all of 1000. A slow drift
+//    buried in fast noise, like a gas's heat, it cannot see (its variance
+//    1/2000 of the noise's, tau = 1000: 99 % of series of 3000 pass, their
+//    errors 1.4 times too small): hence rule 2.
 // So for independent samples the error is known from 16 samples on.
 //
 // The chosen e_k is biased low by the correlation left between batches of

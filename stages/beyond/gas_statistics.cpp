@@ -255,15 +255,23 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
     if (ball_collisions_ >= warm_up_until_) start_averages(gas);
     return;
   }
-  // A sample for the error bars: each quantity over the last N collisions.
+  // Every N collisions, a sample for the error bars.
   if (++sample_collisions_ < collisions_per_sample_) return;
-  const Sums now = sums_at(gas, c.time);
+  take_sample(gas, c.time);
+}
+// [/anchor: collision-sums]
+
+// [anchor: error-samples]
+// A sample for the error bars: each quantity over the last N collisions, to
+// its blocking analysis. The quantities that follow the table's heat get
+// batches at least table_heat_time long (blocking.hpp, rule 2), in samples
+// of the mean length so far.
+void GasStatistics::take_sample(const Gas& gas, double time) {
+  const Sums now = sums_at(gas, time);
   const Sums sample = now.minus(sample_start_);
   sample_start_ = now;
   sample_collisions_ = 0;
   if (!(sample.duration > 0)) return;
-  // The batches of the quantities that follow the table's heat: at least
-  // its heat time long, in samples of the mean length so far.
   const auto samples = static_cast<double>(blocking_[mean_speed_q].count() + 1);
   const double batch =
       std::isfinite(heat_time_) ? heat_time_ / (now.duration / samples) : 1;
@@ -276,7 +284,7 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
     if (std::isfinite(value)) blocking.add(value);
   }
 }
-// [/anchor: collision-sums]
+// [/anchor: error-samples]
 
 void GasStatistics::start_averages(const Gas& gas) {
   averaging_ = true;

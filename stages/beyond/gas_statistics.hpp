@@ -189,6 +189,8 @@ class GasStatistics final : public CollisionObserver {
   static Average& average_of(MeasuredFigures& m, Quantity q);
 
   void start_averages(const Gas& gas);
+  // Closes a sample for the error bars at `time` (every N collisions).
+  void take_sample(const Gas& gas, double time);
   Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress
   int bin_of(double speed) const;                  // bins() for the faster ones
   // Ball number `i` (from 0) gets a new speed at `time`: it comes into the

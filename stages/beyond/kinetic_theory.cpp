@@ -89,6 +89,9 @@ double enskog_mean_free_path(double eta, double radius) {
 // derives dZ = -eta (2 Z' + eta Z'') / (2 N (Z + eta Z')).
 double fixed_count_shift(double area_fraction, std::size_t balls) {
   if (balls == 0) return 0;
+  if (area_fraction > fixed_count_area_fraction_limit &&
+      area_fraction <= fluid_area_fraction_limit)
+    return 0;
   const double eta = area_fraction, z = hard_disc_fluid_compressibility(eta);
   const double slope = hard_disc_fluid_compressibility_slope(eta);
   const double curvature = hard_disc_fluid_compressibility_curvature(eta);

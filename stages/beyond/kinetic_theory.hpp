@@ -88,7 +88,12 @@ double enskog_mean_free_path(double eta, double radius);
 // collisions inside follow w too, so Enskog's rate (and one over the free
 // path) carries the same factor 1 + dZ / (Z - 1). Checked on build/gas
 // against seeds at N = 256 and 1024 (data/reports/kinetic-seeds.md).
-// NaN outside the fluid range; 0 for no balls.
+// The expansion holds for a fluid far from its transition: above eta = 0.6
+// the reference's curvature turns (Z'' < 0 from 0.67 as the hexatic phase
+// nears, where the count's fluctuations are no longer small), and no shift
+// is applied there (fixed_count_area_fraction_limit): the theory is the
+// open bulk's. NaN outside the fluid range; 0 for no balls.
+inline constexpr double fixed_count_area_fraction_limit = 0.6;
 double fixed_count_shift(double area_fraction, std::size_t balls);
 // Z of the interior of a closed box of N balls: the reference plus the shift.
 double fixed_count_compressibility(double area_fraction, std::size_t balls);
