@@ -405,6 +405,29 @@ TEST_SUITE("lyapunov") {
     CHECK(lyapunov.measured(control.gas).exponent.value > 0.05);
   }
 
+  TEST_CASE("the exponent's error waits for 8 batches of at least 16 renormalisations") {
+    // Its samples are anticorrelated over some 30 renormalisations, and
+    // shorter batches make the error too large (lyapunov.hpp): none before
+    // 8 x 16 = 128 samples, and at 127 the reason is the batches' length
+    // (with batches of 8 the error would be known from 64 on).
+    const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
+    gas::Control control = gas::start_control_for(crowd);
+    gas::LyapunovExponent lyapunov(control.gas);
+    control.observer = &lyapunov;
+    while (lyapunov.measured(control.gas).samples < 127)
+      gas::take_step(control, 1e9, nullptr);
+    const gas::LyapunovFigures early = lyapunov.measured(control.gas);
+    CHECK(early.samples == 127);
+    CHECK(std::isnan(early.exponent.error));
+    CHECK(early.exponent.status == gas::ErrorStatus::short_batches);
+    CHECK(std::isfinite(early.exponent.batch_error));  // what batches of 8 would say
+    while (lyapunov.measured(control.gas).samples < 300)
+      gas::take_step(control, 1e9, nullptr);
+    const gas::LyapunovFigures later = lyapunov.measured(control.gas);
+    CHECK(later.exponent.status != gas::ErrorStatus::short_batches);
+    CHECK(later.exponent.status != gas::ErrorStatus::few_samples);
+  }
+
   TEST_CASE("the program: --csv ends with lyapunov and lyapunov_error known at the end") {
     const gas::testing::Scratch scratch;
     const std::string csv = scratch.file("crowd.csv");
