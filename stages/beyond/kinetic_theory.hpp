@@ -38,10 +38,10 @@ struct KineticTheory {
 // [/anchor: kinetic-theory]
 
 // The predictions of the bulk fluid (its equation of state, Enskog's rate)
-// hold for a gas of many balls: with N balls each ball has N - 1 partners,
-// not N, and the box's walls take their share, corrections of order 1 / N
-// that runs of a few balls resolve (lesson 14). Below this many balls the
-// screen says so instead of showing a number.
+// hold for a gas of many balls: the closed box's 1 / N is taken into them
+// (fixed_count_shift, below), but with a few balls the walls take so large
+// a share that there is no interior to speak of (lesson 14). Below this
+// many balls the screen says so instead of showing a number.
 inline constexpr std::size_t kinetic_theory_fewest_balls = 100;
 
 KineticTheory kinetic_theory(const Gas& gas);
