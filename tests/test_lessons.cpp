@@ -766,6 +766,9 @@ TEST_SUITE("lessons") {
     const Expected expected = expected_report(quotes[0]);
     REQUIRE(expected.text);
     CHECK(expected.text->rfind("| η |", 0) == 0);
+    // Up to the section's blank line, not beyond: table lines only.
+    for (const std::string& line : lines_of(*expected.text))
+      CHECK(line.rfind("|", 0) == 0);
     CHECK(*expected.text != quotes[0].content);
     Quote missing = quotes[0];
     missing.anchor = "no-such-section";
