@@ -10,8 +10,9 @@
 // Assumptions: all balls are discs of one radius and one mass (the mass never
 // appears: it cancels from every formula the article uses); collisions are
 // perfectly elastic; the table is the rectangle 0 <= x <= A1, 0 <= y <= A2
-// whose four sides are the walls. Units are the scene file's: lengths in
-// "pixels" of the article's screen, time in model time units.
+// whose four sides are the walls. Units are the scene file's own, lengths and
+// time alike (the default scene's 256 x 192 borrows the numbers of the
+// article's example screen: lessons/README.md, glossary).
 #pragma once
 
 #include <vector>

@@ -1,12 +1,12 @@
 // Stage 2 — input: the scene-file reader. See stage2_input.hpp for the
 // contract and data/README.md for the format.
 //
-// In the order a scene goes through them: a line into words (split_words), a
-// word into a number (read_number), a keyword line into what the file said
-// (read_line, into a SceneText); then the checks of the whole scene, each its
-// own function (check_complete, check_sizes, check_random_line, check_count,
-// check_times, check_inside_table, check_no_overlap), and the description
-// built from it.
+// In the order a scene goes through them: the file into lines (read_lines,
+// a block at a time), a line into words (split_words), a word into a number
+// (read_number), a keyword line into what the file said (read_line, into a
+// SceneText); then the checks of the whole scene, each its own function
+// (check_complete, check_sizes, check_random_line, check_count, check_times,
+// check_inside_table, check_no_overlap), and the description built from it.
 #include "stage2_input.hpp"
 
 #include <fmt/format.h>
@@ -15,8 +15,10 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <iterator>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -198,6 +200,11 @@ void read_line(std::string_view line, int line_number, SceneText& scene) {
     }
     const bool since_given = count == 5;
     const std::vector<double> v = numbers(since_given ? 5 : 4, "x y vx vy");
+    if (static_cast<double>(scene.balls.size()) >= most_balls) {
+      fail(scene.file_name, line_number,
+           fmt::format("ball {}: a scene holds at most {} balls", scene.balls.size() + 1,
+                       most_balls));
+    }
     scene.balls.push_back(Ball{v[0], v[1], v[2], v[3], since_given ? v[4] : 0.0});
     scene.ball_lines.push_back(line_number);
     scene.since_given.push_back(since_given);
@@ -267,17 +274,25 @@ void check_sizes(const SceneText& scene) {
 // [/anchor: check-sizes]
 
 // Check the numbers of a 'random' (or 'lattice') line: COUNT a whole number from 1 to
-// most_random_balls, SEED a whole number from 0 to 2^53 (a double holds every
-// such number exactly), SPEED > 0 and small enough that 1.5 SPEED is still a
-// size the program computes with. The request, or none without the line.
+// most_balls, and with the 'ball' lines at most most_balls, SEED a whole number from 0 to
+// 2^53 (a double holds every such number exactly), SPEED > 0 and small enough that 1.5
+// SPEED is still a size the program computes with. The request, or none without the line.
 std::optional<RandomBalls> check_random_line(const SceneText& scene) {
   if (!scene.random) return std::nullopt;
   const RandomLine& random = *scene.random;
-  if (random.count < 1 || random.count > most_random_balls ||
+  if (random.count < 1 || random.count > most_balls ||
       random.count != std::floor(random.count)) {
     fail(scene.file_name, random.line,
          fmt::format("'{}' COUNT = {} must be a whole number from 1 to {}",
-                     random.keyword, random.count, most_random_balls));
+                     random.keyword, random.count, most_balls));
+  }
+  const auto lines = static_cast<double>(scene.balls.size());
+  if (lines + random.count > most_balls) {
+    fail(scene.file_name, random.line,
+         fmt::format("'{}' places {} balls besides {} 'ball' line{}: {} in all, more "
+                     "than the {} a scene may hold",
+                     random.keyword, random.count, lines, lines == 1 ? "" : "s",
+                     lines + random.count, most_balls));
   }
   if (random.seed < 0 || random.seed > 0x1.0p53 ||
       random.seed != std::floor(random.seed)) {
@@ -415,31 +430,29 @@ void check_inside_table(const SceneText& scene, const std::vector<Point>& centre
 // [/anchor: check-inside-table]
 
 // Check that no two balls overlap at T: no two centres closer than 2a
-// (touching is allowed, up to the contact tolerance).
+// (touching is allowed, up to the contact tolerance). `search` finds the
+// first pair that does (first_overlap_of_all_pairs, or a faster way).
 // [anchor: check-no-overlap]
-void check_no_overlap(const SceneText& scene, const std::vector<Point>& centres) {
+void check_no_overlap(const SceneText& scene, const std::vector<Point>& centres,
+                      const OverlapSearch& search) {
   const double diameter = 2 * scene.radius->value;
   const double closest = diameter - contact_tolerance * diameter;
-  for (std::size_t j = 1; j < scene.balls.size(); ++j) {
-    for (std::size_t i = 0; i < j; ++i) {
-      const double dx = centres[j].x - centres[i].x;
-      const double dy = centres[j].y - centres[i].y;
-      if (dx * dx + dy * dy < closest * closest) {
-        const double apart = std::hypot(dx, dy);
-        fail(scene.file_name, scene.ball_lines[j],
-             fmt::format("ball {} overlaps ball {} (line {}): centres {:.9g} apart{}, "
-                         "less than 2a = {}",
-                         j + 1, i + 1, scene.ball_lines[i], apart,
-                         when(scene, j).empty() ? when(scene, i) : when(scene, j),
-                         diameter));
-      }
-    }
+  if (const std::optional<Overlap> pair = search(centres, closest)) {
+    const std::size_t j = pair->later, i = pair->earlier;
+    const double apart =
+        std::hypot(centres[j].x - centres[i].x, centres[j].y - centres[i].y);
+    fail(scene.file_name, scene.ball_lines[j],
+         fmt::format("ball {} overlaps ball {} (line {}): centres {:.9g} apart{}, "
+                     "less than 2a = {}",
+                     j + 1, i + 1, scene.ball_lines[i], apart,
+                     when(scene, j).empty() ? when(scene, i) : when(scene, j), diameter));
   }
 }
 // [/anchor: check-no-overlap]
 
-// The description of a scene that passes every check.
-SceneDescription checked(const SceneText& scene) {
+// The description of a scene that passes every check (its balls moved out
+// of `scene`).
+SceneDescription checked(SceneText&& scene, const OverlapSearch& search) {
   check_complete(scene);
   check_sizes(scene);
   std::optional<RandomBalls> random = check_random_line(scene);
@@ -447,7 +460,7 @@ SceneDescription checked(const SceneText& scene) {
   check_times(scene);
   const std::vector<Point> centres = centres_at_start(scene);
   check_inside_table(scene, centres);
-  check_no_overlap(scene, centres);
+  check_no_overlap(scene, centres, search);
 
   SceneDescription description;
   description.file_name = scene.file_name;
@@ -456,41 +469,80 @@ SceneDescription checked(const SceneText& scene) {
   description.gas.height = scene.height->value;
   description.gas.display_step = scene.display_step->value;
   description.gas.time = start_time(scene);
-  description.gas.balls = scene.balls;
-  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+  description.gas.balls = std::move(scene.balls);
+  for (std::size_t i = 0; i < description.gas.balls.size(); ++i) {
     if (!scene.since_given[i]) description.gas.balls[i].since = description.gas.time;
   }
   description.random = random;
   return description;
 }
 
+// "FILE: larger than 256 MiB, not a scene file".
+[[noreturn]] void fail_too_large(const std::string& file_name) {
+  throw SceneError(fmt::format("{}: larger than {} MiB, not a scene file", file_name,
+                               largest_scene_file >> 20));
+}
+
+// Line `line_number` of the file, its line end cut, into `scene`: a
+// byte-order mark skipped at the very start, a CR before the line end cut
+// (CRLF files), a line longer than longest_scene_line refused.
+void read_file_line(std::string_view line, int line_number, SceneText& scene) {
+  if (line_number == 1 && line.substr(0, 3) == "\xEF\xBB\xBF")
+    line.remove_prefix(3);  // UTF-8 byte-order mark
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  if (line.size() > longest_scene_line) {
+    fail(scene.file_name, line_number,
+         fmt::format("the line is longer than {} characters, the most a scene's line "
+                     "may have",
+                     longest_scene_line));
+  }
+  read_line(line, line_number, scene);
+}
+
+// The whole lines at the start of `text` into `scene`, numbered on from
+// `line_number`. What follows the last line end (a line not yet ended) is
+// left; returns how many characters were read.
+std::size_t read_lines(std::string_view text, int& line_number, SceneText& scene) {
+  std::size_t start = 0;
+  for (std::size_t end = text.find('\n'); end != std::string_view::npos;
+       end = text.find('\n', start)) {
+    read_file_line(text.substr(start, end - start), ++line_number, scene);
+    start = end + 1;
+  }
+  return start;
+}
+
 }  // namespace
 
+// [anchor: first-overlap-of-all-pairs]
+std::optional<Overlap> first_overlap_of_all_pairs(const std::vector<Point>& centres,
+                                                  double closest) {
+  for (std::size_t j = 1; j < centres.size(); ++j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      const double dx = centres[j].x - centres[i].x;
+      const double dy = centres[j].y - centres[i].y;
+      if (dx * dx + dy * dy < closest * closest) return Overlap{j, i};
+    }
+  }
+  return std::nullopt;
+}
+// [/anchor: first-overlap-of-all-pairs]
+
 SceneDescription parse_scene_description(std::string_view text,
-                                         const std::string& file_name) {
-  if (text.substr(0, 3) == "\xEF\xBB\xBF")
-    text.remove_prefix(3);  // UTF-8 byte-order mark
+                                         const std::string& file_name,
+                                         const OverlapSearch& search) {
+  if (text.size() > largest_scene_file) fail_too_large(file_name);
   SceneText scene;
   scene.file_name = file_name;
   int line_number = 0;
-  while (!text.empty()) {
-    ++line_number;
-    const std::size_t newline = text.find('\n');
-    std::string_view line = text.substr(0, newline);
-    text =
-        newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CRLF files
-    read_line(line, line_number, scene);
-  }
+  text.remove_prefix(read_lines(text, line_number, scene));
+  if (!text.empty()) read_file_line(text, ++line_number, scene);  // no line end
   scene.last_line = line_number > 0 ? line_number : 1;
-  return checked(scene);
+  return checked(std::move(scene), search);
 }
 
-SceneDescription read_scene_description(const std::string& path) {
-  // The largest scene file we read: far above any scene (10^5 balls take
-  // ~5 MB), small enough that a wrong file (a disk image, /dev/zero) is
-  // refused quickly instead of filling the memory.
-  constexpr std::size_t largest = 64u << 20;
+SceneDescription read_scene_description(const std::string& path,
+                                        const OverlapSearch& search) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) {
     throw SceneError(fmt::format("{}: no such scene file", path));
@@ -498,19 +550,38 @@ SceneDescription read_scene_description(const std::string& path) {
   if (std::filesystem::is_directory(path, error)) {
     throw SceneError(fmt::format("{}: is a directory, not a scene file", path));
   }
-  std::ifstream file(path, std::ios::binary);
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(
+      std::fopen(path.c_str(), "rb"), std::fclose);
   if (!file) throw SceneError(fmt::format("{}: cannot open the scene file", path));
-  std::string text;
-  char chunk[1 << 16];
-  while (file.read(chunk, sizeof chunk) || file.gcount() > 0) {
-    text.append(chunk, static_cast<std::size_t>(file.gcount()));
-    if (text.size() > largest) {
-      throw SceneError(
-          fmt::format("{}: larger than {} MiB, not a scene file", path, largest >> 20));
-    }
+
+  // A block at a time: its whole lines read, the start of a line not yet
+  // ended kept for the next block. Only that start and the scene read so far
+  // are in memory, never the file.
+  SceneText scene;
+  scene.file_name = path;
+  int line_number = 0;
+  std::size_t total = 0;
+  constexpr std::size_t block = std::size_t{1} << 20;
+  std::string pending;  // the lines not read yet: a line's start, then a block
+  while (true) {
+    const std::size_t kept = pending.size();
+    pending.resize(kept + block);
+    const std::size_t got = std::fread(pending.data() + kept, 1, block, file.get());
+    pending.resize(kept + got);
+    total += got;
+    if (total > largest_scene_file) fail_too_large(path);
+    if (got == 0) break;
+    pending.erase(0, read_lines(pending, line_number, scene));
+    // A line not ended within the longest line (its CR and the mark aside)
+    // is refused now, before more of it is read.
+    if (pending.size() > longest_scene_line + 4)
+      read_file_line(pending, ++line_number, scene);
   }
-  if (file.bad()) throw SceneError(fmt::format("{}: cannot read the scene file", path));
-  return parse_scene_description(text, path);
+  if (std::ferror(file.get()) != 0)
+    throw SceneError(fmt::format("{}: cannot read the scene file", path));
+  if (!pending.empty()) read_file_line(pending, ++line_number, scene);  // no line end
+  scene.last_line = line_number > 0 ? line_number : 1;
+  return checked(std::move(scene), search);
 }
 
 Gas build_gas(const SceneDescription& scene) {
@@ -523,10 +594,12 @@ Gas build_gas(const SceneDescription& scene) {
   return scene.gas;
 }
 
-#ifndef GAS_STUDENT_SCENE_TEXT  // see lessons/exercises/02-scene-text
-// [anchor: scene-text]
-std::string scene_text(const Gas& gas) {
-  std::string text = fmt::format(
+namespace {
+
+// The lines of a scene file written by gas before its 'ball' lines: a
+// comment, T, a, T0, A1, A2 and N, every number with 17 significant digits.
+std::string scene_heading(const Gas& gas) {
+  return fmt::format(
       "# A checkpoint written by gas (--dump) at model time T = {:.17g}.\n"
       "# Each ball line is the ball's row as the run keeps it: its centre x y\n"
       "# at the moment SINCE it last collided, its velocity vx vy, and SINCE;\n"
@@ -535,13 +608,39 @@ std::string scene_text(const Gas& gas) {
       "#    x y vx vy SINCE\n",
       gas.time, gas.time, gas.radius, gas.display_step, gas.width, gas.height,
       gas.balls.size());
-  for (const Ball& ball : gas.balls) {
-    text += fmt::format("ball {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", ball.x, ball.y,
-                        ball.vx, ball.vy, ball.since);
-  }
+}
+
+// Adds a ball's line to `text`: its row as it is, 'ball x y vx vy SINCE'.
+void add_ball_line(std::string& text, const Ball& ball) {
+  fmt::format_to(std::back_inserter(text),
+                 "ball {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", ball.x, ball.y,
+                 ball.vx, ball.vy, ball.since);
+}
+
+}  // namespace
+
+#ifndef GAS_STUDENT_SCENE_TEXT  // see lessons/exercises/02-scene-text
+// [anchor: scene-text]
+std::string scene_text(const Gas& gas) {
+  std::string text = scene_heading(gas);
+  for (const Ball& ball : gas.balls) add_ball_line(text, ball);
   return text;
 }
 // [/anchor: scene-text]
 #endif
+
+void write_scene_text(const Gas& gas,
+                      const std::function<void(std::string_view piece)>& write) {
+  constexpr std::size_t piece = std::size_t{1} << 16;
+  std::string text = scene_heading(gas);
+  for (const Ball& ball : gas.balls) {
+    add_ball_line(text, ball);
+    if (text.size() >= piece) {
+      write(text);
+      text.clear();
+    }
+  }
+  write(text);
+}
 
 }  // namespace gas

@@ -19,16 +19,25 @@
 // beyond/random_placement.*, whose parse_scene and read_scene_file give the
 // whole gas of any scene. The program reads its scenes through those.
 //
-// Assumptions: a scene is small enough to read into memory. Every problem is
-// reported as "FILE:LINE: what is wrong"; the reader never guesses.
+// Beyond the article too, the search for overlapping balls is the caller's
+// to choose (OverlapSearch): stage 2 compares every pair, as a reader of a
+// handful of balls may; the program passes beyond/overlap_cells.*, which
+// compares each ball only with its neighbours.
+//
+// Assumptions: a file is read line by line, and only what it describes is
+// kept (some 60 bytes a ball), so a scene's size is bounded by the balls it
+// may hold, and a garbage file by the bounds below. Every problem is reported
+// as "FILE:LINE: what is wrong"; the reader never guesses.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "stage1_data.hpp"
 
@@ -61,10 +70,24 @@ inline constexpr double contact_tolerance = 1e-9;
 inline constexpr double smallest_magnitude = 1e-75;
 inline constexpr double largest_magnitude = 1e75;
 
-// The most balls a 'random COUNT SEED SPEED' line may ask for (data/README.md).
-// (10^6: research runs of hard discs go that far, and the cell grid keeps a
-// collision's cost within twice that at 10^3 there; lesson 10.)
-inline constexpr double most_random_balls = 1e6;
+// The most balls a scene may hold: its 'ball' lines and the COUNT of its
+// 'random' line together (data/README.md). 10^6: research runs of hard discs
+// go that far, and the program runs such a gas in some 100 bytes a ball
+// (lesson 10). A --dump of any gas the program runs holds at most as many
+// 'ball' lines, so it always reads back.
+inline constexpr double most_balls = 1e6;
+
+// The longest line a scene file may have, in characters (its line end not
+// counted). A 'ball' line as --dump writes it takes some 100; the bound
+// leaves room for any comment, and refuses a file with no line ends (a disk
+// image, /dev/zero) once that much is read.
+inline constexpr std::size_t longest_scene_line = std::size_t{1} << 16;
+
+// The largest scene file, in bytes: 256 MiB, some 2.8 times a --dump of
+// most_balls balls (96 bytes a ball). The reader keeps the balls, never the
+// text, so this bounds only the time a garbage file takes to read (a file of
+// nothing but line ends: some seconds) and the count of its lines.
+inline constexpr std::size_t largest_scene_file = std::size_t{1} << 28;
 
 // What a 'random COUNT SEED SPEED' line asks for, its numbers checked: COUNT
 // balls at random places, from the generator seeded with SEED, with speeds
@@ -72,7 +95,7 @@ inline constexpr double most_random_balls = 1e6;
 // A 'lattice COUNT SEED SPEED' line asks for the same, but on a lattice,
 // every ball at speed SPEED exactly (a start far from equilibrium).
 struct RandomBalls {
-  std::size_t count = 0;   // COUNT, 1 to most_random_balls
+  std::size_t count = 0;   // COUNT, 1 to most_balls less the 'ball' lines
   std::uint64_t seed = 0;  // SEED, 0 to 2^53
   double speed = 0;        // SPEED > 0
   int line = 0;            // the line of the file it is on, for messages
@@ -88,12 +111,35 @@ struct SceneDescription {
   std::optional<RandomBalls> random;  // the 'random' line, if any
 };
 
-// Parses scene text; `file_name` is used only in messages.
-SceneDescription parse_scene_description(std::string_view text,
-                                         const std::string& file_name);
+// Two balls of a scene whose centres at its T are too close, by their
+// numbers (0 for the first 'ball' line): `later` comes after `earlier`.
+struct Overlap {
+  std::size_t later = 0;
+  std::size_t earlier = 0;
+};
 
-// Reads and parses the scene file at `path`.
-SceneDescription read_scene_description(const std::string& path);
+// How the reader looks for overlapping balls: given the centres at T in the
+// order of the file and the least distance `closest` allowed between two, the
+// first pair closer than that — the first ball closer to some ball before it,
+// and the first such ball before it — or none. "Closer" means, for centres p
+// (later) and q (earlier), with dx = p.x - q.x and dy = p.y - q.y in doubles:
+// dx * dx + dy * dy < closest * closest. Every search gives the same answer.
+using OverlapSearch =
+    std::function<std::optional<Overlap>(const std::vector<Point>&, double closest)>;
+
+// The plain search: every pair, N (N - 1) / 2 of them; the reader's own.
+std::optional<Overlap> first_overlap_of_all_pairs(const std::vector<Point>& centres,
+                                                  double closest);
+
+// Parses scene text; `file_name` is used only in messages. Overlaps are
+// looked for with `search`.
+SceneDescription parse_scene_description(
+    std::string_view text, const std::string& file_name,
+    const OverlapSearch& search = first_overlap_of_all_pairs);
+
+// Reads and parses the scene file at `path` the same way, a line at a time.
+SceneDescription read_scene_description(
+    const std::string& path, const OverlapSearch& search = first_overlap_of_all_pairs);
 
 // The gas of a scene that lists all its balls. A scene with a 'random' line
 // is refused (at that line): its gas comes from place_random_balls,
@@ -109,5 +155,11 @@ Gas build_gas(const SceneDescription& scene);
 // [anchor: scene-text-declaration]
 std::string scene_text(const Gas& gas);
 // [/anchor: scene-text-declaration]
+
+// The same text handed to `write` a piece at a time (the heading, then the
+// 'ball' lines some 64 kB at a time), so that a --dump of a large gas never
+// holds its whole text (96 bytes a ball: 96 MB for 10^6 balls).
+void write_scene_text(const Gas& gas,
+                      const std::function<void(std::string_view piece)>& write);
 
 }  // namespace gas

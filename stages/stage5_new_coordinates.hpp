@@ -5,8 +5,9 @@
 // 6 can erase them, computes the new centres, and, when the step ends on a
 // collision, gives the colliding balls their new velocities.
 // Article: "Gas on the display", stage 5, "new coordinates" (T1 = T0 if
-// TC > T + T0, else T1 = TC - T; new velocities of N1 (K != 3) or of N1 and N2
-// (K = 3) by the formula for VI).
+// TC > T + T0, T1 = TC - T if TC < T + T0, and TC = T + T0 left open: the
+// glossary of lessons/README.md; new velocities of N1 (K != 3) or of N1 and
+// N2 (K = 3) by the formula for VI).
 // Lesson: lessons/5-new-coordinates.md
 //
 // Assumptions: the physics moves from collision to collision (stage 1's Ball
@@ -22,9 +23,9 @@ namespace gas {
 
 // T1, the time to the next picture: the display step T0 if the first
 // collision comes later than T + T0, else just up to the collision, T1 = TC - T.
-// (The article says what to do for TC > T + T0 and for TC < T + T0; at
-// TC = T + T0 exactly the step ends on the collision.) Stage 7's loop asks
-// this one function where each step ends.
+// (At TC = T + T0 exactly, which the article leaves open, the step ends on
+// the collision: lessons/README.md, glossary.) Stage 7's loop asks this one
+// function where each step ends.
 // [anchor: step-length]
 struct StepEnd {
   double time = 0;            // T + T1, the model time of the next picture

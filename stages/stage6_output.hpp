@@ -1,15 +1,17 @@
 // Stage 6 — output to the screen.
 //
-// What this stage does: draws what we want to see on the text screen of stage
-// 3, in one of the article's three ways — the moving balls (erase each old
+// What this stage does: shows what we want to know of the gas (the article:
+// it depends on 「われわれが何を知りたいか」) on the text screen of stage 3,
+// in one of the article's three ways — the moving balls (erase each old
 // image, draw the new one), their trajectories (a segment from each old
 // centre to the new one, nothing erased), or a character screen of figures
 // (no drawing at all) — and sends the screen to the terminal.
 // Article: "Gas on the display", stage 6, "output to the screen".
 // Lesson: lessons/6-output.md
 //
-// Assumptions: a terminal that understands ANSI escapes when it is a terminal;
-// plain text frames otherwise.
+// Assumptions: a terminal that understands ANSI escapes when frames are
+// drawn in place (the program decides: stages/program/console.cpp); plain
+// text frames otherwise.
 #pragma once
 
 #include <cstdio>
@@ -81,15 +83,37 @@ void draw_figures(TextScreen& screen, const std::vector<std::string>& lines);
 // The one-line heading above every frame.
 std::string status_line(const Figures& figures, ScreenMode mode, bool stopped);
 
-// Sends frames to standard output. On a terminal: draws in place with ANSI
-// escapes, sending only the characters that changed (with colour when
-// `colour`), and nothing outside the window; elsewhere: every frame in full,
-// headed by its status line.
+// The words of a notice fitted to a window `columns` wide and `rows` high:
+// as many words a line as fit, a word never split (a size "8 x 7" is one
+// word) unless it alone is wider than the window; when the lines are more
+// than `rows`, words are left out from the front, so that the last ones,
+// which say the most (the size wanted), stay. 0 columns or rows: no limit.
+std::vector<std::string> fit_words(const std::vector<std::string>& words, int columns,
+                                   int rows);
+
+// Sends frames to standard output. Drawn in place (a terminal that
+// understands ANSI escapes): only the characters that changed are sent, the
+// table's ball and trail glyphs in colour when `colour`, and nothing outside
+// the window. Not in place (a file, a pipe, a terminal whose TERM is dumb):
+// every frame in full, headed by its status line, with no escape at all.
 class Display {
  public:
-  Display(std::FILE* out, bool terminal, bool colour)
-      : out_(out), terminal_(terminal), colour_(colour) {}
-  void show(const TextScreen& screen, const std::string& status, const Tone& tone);
+  Display(std::FILE* out, bool in_place, bool colour)
+      : out_(out), in_place_(in_place), colour_(colour) {}
+  // Sends `screen` under its `status` line. `tone`: the tone of a table,
+  // whose ball and trail glyphs inside the border are coloured; none for a
+  // screen of figures, where a '.' or a '+' is part of a number or a word.
+  void show(const TextScreen& screen, const std::string& status, const Tone* tone);
+  // A status line with no frame, for ticks in which the model stood
+  // stopped and nothing moved: printed whole, the line alone; drawn in
+  // place, nothing (the frame's own status line says "[stopped]").
+  void status_only(const std::string& status);
+  // A line under every frame from now on, saying the keys: the first of
+  // `forms` that fits the window's width (else the last, cut). Drawn in
+  // place, it takes the row under the frame (a frame taller than the window
+  // is cut to leave it the window's last row); printed whole, it follows
+  // each frame. No forms: no line.
+  void keys_below(std::vector<std::string> forms);
   // Forget what the terminal shows, so that the next frame is drawn whole.
   void invalidate() {
     shown_.clear();
@@ -99,23 +123,34 @@ class Display {
   // line is cut at its right edge, and lines below it are left out (the
   // frame's own size does not change). The frame is drawn whole next time.
   void fit_window(int columns, int rows);
-  // On a terminal: a clear screen with `line` alone at the top, cut to the
-  // window (sent once, until a frame or invalidate()); elsewhere: the line.
-  void notice(const std::string& line);
+  // Drawn in place: a clear screen with `words` alone at the top, fitted to
+  // the window by fit_words (sent once, until a frame or invalidate());
+  // printed whole: the words on one line.
+  void notice(const std::vector<std::string>& words);
   void bell();
-  // On a terminal: moves the cursor below the last frame and shows it again.
+  // Drawn in place: the key line wiped, the cursor below the last frame (or
+  // on the wiped line) and shown again.
   void finish();
 
  private:
   void cut_to_window(std::string& line) const;  // at the window's right edge
+  std::string key_line() const;                 // the form that fits, cut
+  // The escapes and characters that turn what the terminal shows into
+  // `frame` (status line first), colouring the glyphs of `tone` in the
+  // rows and columns of `table` (the frame's cells inside the border).
+  std::string changes(const std::vector<std::string>& frame, const Tone* tone,
+                      Cell table_end);
 
   std::FILE* out_;
-  bool terminal_;
+  bool in_place_;
   bool colour_;
   int window_columns_ = 0;          // the window's width; 0: no limit
   int window_rows_ = 0;             // the window's height; 0: no limit
+  std::vector<std::string> keys_;   // the key line's forms, widest first
   std::vector<std::string> shown_;  // what the terminal shows now, status line first
   std::string notice_;              // the notice the terminal shows now, if any
+  std::size_t notice_rows_ = 0;     // its rows
+  bool keys_shown_ = false;         // is the key line on the terminal?
 };
 
 }  // namespace gas

@@ -155,10 +155,13 @@ KeyEffect press_key(Control& control, char key) {
       reverse_velocities(control.gas);
       control.tone = 1 - control.tone;
       control.must_find_collision = true;
-      control.stopped = false;  // "go on computing": a stopped model runs again
+      // A stopped model runs again: our reading of 「計算過程を実行する」
+      // (lessons/README.md, glossary).
+      control.stopped = false;
       break;
-    // T0 only decides where pictures are taken; TC does not depend on it, so
-    // unlike the article's program we need not go back to stage 4.
+    // The article, after "<": if such an operation changes TC, the next
+    // command goes to stage 4. Here T0 only decides where pictures are taken
+    // and TC never depends on it, so > and < never need stage 4.
     // (T0 stays a positive, finite number that moves T, however often a key
     // is pressed.)
     case '>':

@@ -328,10 +328,11 @@ struct ArticleCollision {
   int zero_divisions = 0;
 };
 
-// How the literal scan reads "N3 and N4 do not collide before TC", for which
-// the article prints no inequality: a pair replaces TC only if strictly
-// earlier, or also at a tie (as the wall's "x + vx (TC - T) < G1" does: a
-// wall reached exactly at TC fails the test and replaces it).
+// How the literal scan reads "N3 and N4 do not collide in the time up to TC"
+// (「TC までの時間に」, up to and including TC: lessons/README.md, glossary),
+// for which the article prints no inequality: a pair replaces TC only if
+// strictly earlier, or also at a tie (as the wall's "x + vx (TC - T) < G1"
+// does: a wall reached exactly at TC fails the test and replaces it).
 enum class PairTies { kept, replaced };
 
 // Which of one ball's walls the literal scan tests first. The article says
@@ -924,11 +925,11 @@ TEST_SUITE("article") {
   TEST_CASE(
       "article ties: where simultaneous collisions share a ball the order decides") {
     // For pairs the article prints no inequality ("N3 and N4 do not collide
-    // before TC"). Read like its wall test, a pair meeting exactly at TC
-    // would replace it and the later pair would win. Then the order matters:
-    // ball 2 at rest is struck at T = 3 by ball 1 along x and by ball 3 along
-    // (3, 4)/5, both meetings exact in floating point (a = 5: the centres
-    // 10 apart along (1, 0) and along (6, 8)).
+    // in the time up to TC", 「TC までの時間に」). Read like its wall test, a
+    // pair meeting exactly at TC would replace it and the later pair would
+    // win. Then the order matters: ball 2 at rest is struck at T = 3 by ball
+    // 1 along x and by ball 3 along (3, 4)/5, both meetings exact in floating
+    // point (a = 5: the centres 10 apart along (1, 0) and along (6, 8)).
     const gas::Gas g = table(
         100, 100, 5, {ball(34, 50, 2, 0), ball(50, 50, 0, 0), ball(65, 70, -3, -4)}, 8);
     REQUIRE(gas::pair_time(g, 1, 2) == 3);
@@ -976,7 +977,9 @@ TEST_SUITE("article") {
   TEST_CASE(
       "article limits: G1 = A1 - 2a - 1 is the corner of a ball drawn inside a one-pixel "
       "border") {
-    // The article's screen: integer points 1..256 by 1..192. Interpretation:
+    // The article's example screen: integer points 1..256 by 1..192. Our
+    // reading (the article says only that G1 and G2 are the limits of the
+    // centres' positions, 「球の中心の位置の限界」, "of the type" G1 = A1 - 2a - 1):
     // the table's border is a line one point wide on the columns 1 and A1 (the
     // rows 1 and A2); the point (x, y) stored for a ball is where its drawing
     // starts, the corner of its box of 2a + 1 points, so it covers x..x+2a and

@@ -44,7 +44,8 @@ TEST_SUITE("benchmark") {
           "\n## 2. Accuracy against cost for the number type\n",
           "\n## 3. Time reversal\n", "\n## 4. What an event-driven program buys\n",
           "\n## 5. The program as users run it\n",
-          "\n## 6. Beside the best peer, and a million balls\n"}) {
+          "\n## 6. Beside the best peer, and a million balls\n",
+          "\n## 7. Checkpoints: a dump written and read back\n"}) {
       CHECK_MESSAGE(report.find(heading) != std::string::npos, "no heading " << heading);
     }
     // The machine and the build are described.
@@ -79,6 +80,11 @@ TEST_SUITE("benchmark") {
     CHECK_MESSAGE(peer.find("**not run**: no checkout given") != std::string::npos, peer);
     CHECK_MESSAGE(peer.find("\n| 200 | ") != std::string::npos, peer);
     CHECK_MESSAGE(peer.find("failed") == std::string::npos, peer);
+    // Section 7: the tiny scene dumped, read, and continued to the same bytes.
+    const std::string dumps = report.substr(report.find("\n## 7."));
+    CHECK_MESSAGE(dumps.find("\n| 200 | ") != std::string::npos, dumps);
+    CHECK_MESSAGE(dumps.find("| identical |") != std::string::npos, dumps);
+    CHECK_MESSAGE(dumps.find("failed") == std::string::npos, dumps);
 
     // The pictures: drawn and linked if gnuplot is installed, else the report
     // says why there are none.
@@ -96,9 +102,10 @@ TEST_SUITE("benchmark") {
 
     // Every CSV file: its header and at least one row, every row as many
     // fields as the header.
-    for (const char* name : {"throughput.csv", "default-scene.csv", "number-types.csv",
-                             "number-types-distance.csv", "time-reversal.csv",
-                             "time-stepping.csv", "program.csv", "peer.csv"}) {
+    for (const char* name :
+         {"throughput.csv", "default-scene.csv", "number-types.csv",
+          "number-types-distance.csv", "time-reversal.csv", "time-stepping.csv",
+          "program.csv", "peer.csv", "dumps.csv"}) {
       CAPTURE(name);
       const std::vector<std::string> lines = lines_of(read_file((out / name).string()));
       REQUIRE(lines.size() >= 2);

@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "beyond/kinetic_screen.hpp"
+#include "beyond/kinetic_csv.hpp"
 #include "beyond/lyapunov_screen.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
@@ -69,7 +69,8 @@ std::string usage_error(const std::vector<std::string>& arguments) {
 using gas::testing::Scratch;
 
 // The frames of a plain (not a terminal) run: each a status line starting
-// "T=", then a screen from a '+' border line to the next one.
+// "T=", then a screen from a '+' border line to the next one. (A status line
+// alone marks a tick of a stopped model: no frame.)
 struct Frame {
   std::string status;
   std::vector<std::string> screen;
@@ -92,7 +93,7 @@ std::vector<Frame> frames_of(const std::string& out) {
       while (starts('|')) frame.screen.push_back(lines[i++]);
       if (starts('+')) frame.screen.push_back(lines[i++]);
     }
-    frames.push_back(frame);
+    if (!frame.screen.empty()) frames.push_back(frame);
   }
   return frames;
 }
@@ -203,8 +204,41 @@ TEST_SUITE("console") {
     CHECK(usage_error({"--frames", "5x"}) == "--frames takes a whole number, not '5x'");
     CHECK(usage_error({"--frames", "2.5"}) == "--frames takes a whole number, not '2.5'");
     CHECK(usage_error({"--frames", ""}) == "--frames takes a whole number, not ''");
+    // Numbers written right but too large: said as such.
     CHECK(usage_error({"--frames", "99999999999999999999"}) ==
-          "--frames takes a whole number, not '99999999999999999999'");
+          "--frames 99999999999999999999: too large (at most 9223372036854775807)");
+    CHECK(usage_error({"--frames", "-99999999999999999999"}) ==
+          "--frames -99999999999999999999: too small");
+    CHECK(usage_error({"--cols", "99999999999999999999"}) ==
+          "--cols 99999999999999999999: too large (at most 10000)");
+    CHECK(usage_error({"--until", "1e999"}) ==
+          "--until 1e999: too large (a double holds none beyond +-1.79769e+308)");
+    CHECK(usage_error({"--until", "1e-999"}) ==
+          "--until 1e-999: too near zero (a double holds none nearer than 4.94066e-324)");
+    // An option given twice, whatever its values (-h is --help).
+    CHECK(usage_error({"--until", "5", "--until", "6"}) == "--until is given twice");
+    CHECK(usage_error({"--until=5", "--until", "5"}) == "--until is given twice");
+    CHECK(usage_error({"--step", "--step"}) == "--step is given twice");
+    CHECK(usage_error({"-h", "--help"}) == "--help is given twice");
+    CHECK(usage_error({"--mode", "none", "--mode", "stats"}) == "--mode is given twice");
+    // --keys: the keys of the keyboard and '.', nothing else.
+    CHECK(usage_error({"--keys", "xyz"}) ==
+          "--keys takes the keys S R B > < 0 E A (upper or lower case) and '.' for none, "
+          "not 'x'");
+    CHECK(usage_error({"--keys", "S. R"}) ==
+          "--keys takes the keys S R B > < 0 E A (upper or lower case) and '.' for none, "
+          "not ' '");
+    CHECK(gas::parse_options({"--keys", "srb><0ea.SRB><0EA"}).keys ==
+          "srb><0ea.SRB><0EA");
+    // An empty file name, and an empty scene name.
+    for (const char* option : {"--events", "--dump", "--csv", "--structure"}) {
+      CHECK(usage_error({option, ""}) ==
+            fmt::format("{} takes a file name, not an empty one", option));
+      CHECK(usage_error({fmt::format("{}=", option)}) ==
+            fmt::format("{} takes a file name, not an empty one", option));
+    }
+    CHECK(usage_error({""}) ==
+          "an empty scene name: give a scene file or a teaching scene's name");
     CHECK(usage_error({"--until", "soon"}) ==
           "--until takes a finite number, not 'soon'");
     CHECK(usage_error({"--until", "inf"}) == "--until takes a finite number, not 'inf'");
@@ -290,6 +324,14 @@ TEST_SUITE("console") {
     const std::vector<Frame> frames = frames_of(stopped.out);
     REQUIRE(frames.size() == 3);
     CHECK(frames[2].status.rfind("T=3.000000 ", 0) == 0);
+    // The ticks of the stopped model (S and the two dots) marked by one
+    // status line alone, between the first frame and the second.
+    const std::vector<std::string> lines = lines_of(stopped.out);
+    REQUIRE(lines.size() == 3 * 23 + 1);
+    CHECK(
+        lines[23] ==
+        "T=1.000000 T0=1 collisions=0 (walls 0, balls 0) screen=balls [stopped 3 ticks]");
+    CHECK(lines[24].rfind("T=2.000000 ", 0) == 0);
 
     const auto stuck =
         run_program({"data/default.scene", "--keys", ".S", "--frames", "10"});

@@ -25,8 +25,8 @@
 namespace {
 
 // A gas of `count` balls of radius 4 at random, non-overlapping places on the
-// article's 256 x 192 table, with random velocities (seeded: the same gas
-// every time).
+// default scene's 256 x 192 table, with random velocities (seeded: the same
+// gas every time).
 gas::Gas random_gas(int count, std::uint64_t seed) {
   gas::Gas g;
   g.radius = 4;

@@ -136,9 +136,8 @@ TEST_SUITE("stage4") {
     for (const double factor : {1e-4, 1e4}) {
       CAPTURE(factor);
       long long asked = 0;
-      const auto changing = [&asked, factor, first = gas_like(1.0),
-                             second = gas_like(factor)](double now,
-                                                        std::mt19937_64& random) mutable {
+      const auto changing = [&asked, first = gas_like(1.0), second = gas_like(factor)](
+                                double now, std::mt19937_64& random) mutable {
         return ++asked < 30000 ? first(now, random) : second(now, random);
       };
       long long layouts = 0;

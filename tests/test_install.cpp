@@ -14,11 +14,19 @@
 //   commit, which is known when the source tree is a git checkout.
 // - The manual page (stages/program/gas.1.in) names every option of --help
 //   and no other, every key of --help's key list and no other, and every
-//   exit status --help gives.
+//   exit status --help gives; its SYNOPSIS every option of --help's usage.
+// - --help fits a terminal of 80 columns.
+// - What a Debian package must carry: the copyright in Debian's
+//   machine-readable form, a changelog whose newest entry names the
+//   project's version, the manual page and the changelog gzipped as
+//   `gzip -9n` does (no name, no time: the same bytes from every build), and
+//   `cmake --install` puts them where lintian looks.
 // Not one of the article's stages; the reference: README.md ("Installing").
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -66,6 +74,38 @@ std::string section_of(const std::string& text, const std::string& from,
 // The manual page's source.
 std::string manual_page() {
   return read_file(source_path("stages/program/gas.1.in"));
+}
+
+// The options a text names: words that start with - or --.
+std::set<std::string> options_in(const std::string& text) {
+  return matches_of(text, "(?:^|[\\s\\[(|])(--?[a-z][a-z0-9-]*)");
+}
+
+// The options a part of the manual page names (its hyphens written \-).
+std::set<std::string> options_in_page(const std::string& text) {
+  std::set<std::string> options;
+  for (const std::string& option :
+       matches_of(text, "(?:^|[\\s\\[(|\"])((?:\\\\-){1,2}[a-z][a-z0-9-]*)"))
+    options.insert(std::regex_replace(option, std::regex("\\\\-"), "-"));
+  return options;
+}
+
+// What `gzip -dc` makes of a file.
+std::string gunzipped(const std::string& path) {
+  const gas::testing::Scratch scratch;
+  const std::string out = scratch.file("out");
+  REQUIRE(std::system(fmt::format("gzip -dc '{}' >'{}'", path, out).c_str()) == 0);
+  return read_file(out);
+}
+
+// Is `path` a gzip file as `gzip -9n` writes it: no file name and no time
+// in its header (byte 3, the flags: no FNAME; bytes 4-7, the time: 0), and
+// the most compression (byte 8: 2)?
+bool gzipped_for_a_package(const std::string& path) {
+  const std::string bytes = read_file(path);
+  return bytes.size() > 10 && bytes[0] == '\x1f' && bytes[1] == '\x8b' &&
+         (bytes[3] & 0x08) == 0 && bytes.substr(4, 4) == std::string(4, '\0') &&
+         bytes[8] == 2;
 }
 
 }  // namespace
@@ -180,16 +220,87 @@ TEST_SUITE("install") {
     }
   }
 
+  TEST_CASE("--help fits 80 columns and the manual page's SYNOPSIS names its usage") {
+    const std::string help = gas::help_text();
+    for (const std::string& line : gas::testing::lines_of(help)) {
+      CAPTURE(line);
+      CHECK(line.size() <= 80);
+    }
+    // --help's usage (to the first blank line) against the page's SYNOPSIS.
+    const std::size_t usage = help.find("usage:");
+    REQUIRE(usage != std::string::npos);
+    const auto in_usage =
+        options_in(help.substr(usage, help.find("\n\n", usage) - usage));
+    const auto in_synopsis =
+        options_in_page(section_of(manual_page(), ".SH SYNOPSIS", ".SH "));
+    REQUIRE(in_usage.count("--structure") == 1);  // the pattern reads the usage
+    for (const std::string& option : in_usage) {
+      CAPTURE(option);
+      CHECK_MESSAGE(in_synopsis.count(option) == 1,
+                    "add " << option << " to the SYNOPSIS of stages/program/gas.1.in");
+    }
+    for (const std::string& option : in_synopsis) {
+      CAPTURE(option);
+      CHECK(in_usage.count(option) == 1);
+    }
+  }
+
+  TEST_CASE(
+      "the package's copyright and changelog: machine-readable and the project's "
+      "version") {
+    // Debian's machine-readable format: its Format line, a Files paragraph
+    // with a Copyright and a License; the license's name followed by its text.
+    const std::vector<std::string> copyright =
+        gas::testing::lines_of(read_file(source_path("stages/program/copyright")));
+    REQUIRE(!copyright.empty());
+    CHECK(copyright[0] ==
+          "Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/");
+    const auto files = std::find(copyright.begin(), copyright.end(), "Files: *");
+    REQUIRE(files != copyright.end());
+    REQUIRE(files + 3 < copyright.end());
+    CHECK(files[1].rfind("Copyright: ", 0) == 0);
+    CHECK(files[2].rfind("License: ", 0) == 0);
+    CHECK(files[3].rfind(" ", 0) == 0);  // the license's text
+    // The changelog, newest entry first: the version CMake gives the package.
+    const std::vector<std::string> changelog =
+        gas::testing::lines_of(read_file(source_path("stages/program/changelog")));
+    REQUIRE(!changelog.empty());
+    CHECK(changelog[0] ==
+          fmt::format("gas-on-the-display ({}) unstable; urgency=medium", GAS_VERSION));
+    CHECK(std::regex_match(
+        changelog.back(), std::regex(" -- .+ <.+>  [A-Z][a-z]{2}, [0-9]{2} [A-Z][a-z]{2} "
+                                     "[0-9]{4} [0-9:]{8} [+-][0-9]{4}")));
+  }
+
+  TEST_CASE(
+      "cmake --install puts the gzipped page and the copyright and the changelog in "
+      "place") {
+    const gas::testing::Scratch prefix;
+    const std::string command =
+        fmt::format("'{}' --install '{}' --prefix '{}' >'{}' 2>&1", GAS_CMAKE,
+                    GAS_BUILD_FOLDER, prefix.path.string(), prefix.file("log"));
+    REQUIRE_MESSAGE(std::system(command.c_str()) == 0, read_file(prefix.file("log")));
+    const fs::path doc = prefix.path / "share/doc/gas-on-the-display";
+    const std::string page = (prefix.path / "share/man/man1/gas.1.gz").string();
+    const std::string changelog = (doc / "changelog.gz").string();
+    REQUIRE(fs::exists(page));
+    REQUIRE(fs::exists(changelog));
+    CHECK(!fs::exists(prefix.path / "share/man/man1/gas.1"));  // only gzipped
+    CHECK(gzipped_for_a_package(page));
+    CHECK(gzipped_for_a_package(changelog));
+    CHECK(gunzipped(page) == read_file(fmt::format("{}/gas.1", GAS_BUILD_FOLDER)));
+    CHECK(gunzipped(changelog) == read_file(source_path("stages/program/changelog")));
+    CHECK(read_file((doc / "copyright").string()) ==
+          read_file(source_path("stages/program/copyright")));
+  }
+
   TEST_CASE("the manual page names every option of --help and no other") {
     const std::string help = gas::help_text();
     const std::string page = manual_page();
-    // An option starts a word: the hyphen of billiard-ball is none.
-    const auto in_help = matches_of(help, "(?:^|[\\s\\[(|])(--?[a-z][a-z0-9-]*)");
-    // In the page an option's hyphens are \- (hyphens that copy as such).
-    std::set<std::string> in_page;
-    for (const std::string& option :
-         matches_of(page, "(?:^|[\\s\\[(|\"])((?:\\\\-){1,2}[a-z][a-z0-9-]*)"))
-      in_page.insert(std::regex_replace(option, std::regex("\\\\-"), "-"));
+    // An option starts a word: the hyphen of billiard-ball is none. In the
+    // page an option's hyphens are \- (hyphens that copy as such).
+    const auto in_help = options_in(help);
+    const auto in_page = options_in_page(page);
     REQUIRE(in_help.count("--frames") == 1);  // the pattern reads --help
     for (const std::string& option : in_help) {
       CAPTURE(option);

@@ -55,9 +55,11 @@ std::size_t fields(const std::string& line) {
 pid_t start_gas(const std::vector<std::string>& arguments, const std::string& err) {
   const pid_t child = fork();
   if (child == 0) {
-    std::freopen("/dev/null", "r", stdin);
-    std::freopen("/dev/null", "w", stdout);
-    std::freopen(err.c_str(), "w", stderr);
+    // (A stream that cannot be reopened: no run, status 126.)
+    if (!std::freopen("/dev/null", "r", stdin) ||
+        !std::freopen("/dev/null", "w", stdout) ||
+        !std::freopen(err.c_str(), "w", stderr))
+      std::_Exit(126);
     std::vector<char*> argv{const_cast<char*>(GAS_PROGRAM)};
     for (const std::string& argument : arguments)
       argv.push_back(const_cast<char*>(argument.c_str()));

@@ -960,7 +960,8 @@ TEST_SUITE("lessons") {
           "lessons/7-model-control.md", "lessons/8-errata.md",
           "lessons/9-time-reversal.md", "lessons/10-scaling.md",
           "lessons/12-statistics-screen.md", "lessons/13-box-and-bulk.md",
-          "lessons/14-error-bars.md", "lessons/15-chaos.md"}) {
+          "lessons/14-error-bars.md", "lessons/15-chaos.md",
+          "lessons/16-long-time-tail.md"}) {
       if (named.count(lesson) == 0)
         problems.push_back(fmt::format("lessons/README.md does not name {}", lesson));
     }

@@ -13,6 +13,7 @@
 //   the tangent-space exponent within its error (the default scene, the
 //   crowd, and a dense gas).
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -302,9 +303,11 @@ TEST_SUITE("lyapunov") {
         gas::testing::read_file(gas::testing::source_path("data/default.scene")),
         "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
-    for (const auto& [name, gas] : {std::pair{std::string("default"), seven},
-                                    std::pair{std::string("crowd"), crowd},
-                                    std::pair{std::string("dense"), dense_gas()}}) {
+    for (const auto& scene : {std::pair{std::string("default"), seven},
+                              std::pair{std::string("crowd"), crowd},
+                              std::pair{std::string("dense"), dense_gas()}}) {
+      const std::string& name = scene.first;
+      const Gas& gas = scene.second;
       CAPTURE(name);
       CHECK(twin_mismatch(gas, 2, 1e-9 * gas.radius) < 1e-2);
     }
@@ -315,10 +318,16 @@ TEST_SUITE("lyapunov") {
         gas::testing::read_file(gas::testing::source_path("data/default.scene")),
         "default");
     const Gas crowd = gas::read_scene_file(gas::testing::source_path("data/crowd.scene"));
-    for (const auto& [name, gas, samples] :
-         {std::tuple{std::string("default"), seven, 2000LL},
-          std::tuple{std::string("crowd"), crowd, 1000LL},
-          std::tuple{std::string("dense"), dense_gas(), 400LL}}) {
+    struct Scene {
+      std::string name;
+      Gas gas;
+      long long samples;  // renormalisations
+    };
+    for (const Scene& scene : {Scene{"default", seven, 2000}, Scene{"crowd", crowd, 1000},
+                               Scene{"dense", dense_gas(), 400}}) {
+      const std::string& name = scene.name;
+      const Gas& gas = scene.gas;
+      const long long samples = scene.samples;
       CAPTURE(name);
       const TwinExponents e = twin_exponents(gas, samples);
       CAPTURE(e.twins.value);
@@ -374,8 +383,16 @@ TEST_SUITE("lyapunov") {
     f.per_collision_per_ball_error = 0.25;
     const auto lines = gas::lyapunov_lines(gas, f);
     REQUIRE(lines.size() == 2);
-    CHECK(lines[0].find("0.125 +- 0.062") != std::string::npos);
-    CHECK(lines[0].find("2.5 +- 0.25") != std::string::npos);
+    CHECK(lines[0] ==
+          "Lyapunov: 0.125 +- 0.062 per unit time, 2.5 +- 0.25 per collision per ball");
+    // An error not known yet says why, for both.
+    f.exponent = {0.125, gas::not_known, "not yet"};
+    f.per_collision_per_ball_error = gas::not_known;
+    CHECK(gas::lyapunov_lines(gas, f)[0] ==
+          "Lyapunov: 0.125 +- not yet per unit time, 2.5 +- not yet per collision per "
+          "ball");
+    f.exponent = {0.125, 0.0625};
+    f.per_collision_per_ball_error = 0.25;
     CHECK(lines[1].find("double") != std::string::npos);
     for (const std::string& line : lines)
       CHECK(line.size() <= 76);  // an 80-column screen
@@ -454,7 +471,8 @@ TEST_SUITE("lyapunov") {
   }
 
   TEST_CASE(
-      "the statistics screen: the exponent's lines as far as the histogram has room") {
+      "the statistics screen: the exponent's lines last and named when there is no "
+      "room") {
     const gas::Figures f = gas::testing::some_figures();
     gas::KineticFigures k;
     k.theory.kT = 1;
@@ -467,22 +485,23 @@ TEST_SUITE("lyapunov") {
         if (line.find(text) != std::string::npos) return true;
       return false;
     };
-    // The shortest screen that shows the histogram: the histogram first, no
-    // line of the exponent's.
     auto screen_of = [&](int rows) {
       gas::TextScreen screen = gas::prepare_character_screen(80, rows);
       gas::draw_kinetic_figures(screen, f, k, more);
       return screen;
     };
+    // The exponent's lines rank last: the shortest screen that leaves nothing
+    // out shows both, with the histogram; one row less, the second is named
+    // in the line of what is left out, with the rows that show it all.
     int rows = 10;
-    while (rows < 60 && !shows(screen_of(rows), "speeds:")) ++rows;
-    const gas::TextScreen small = screen_of(rows);
-    CHECK(shows(small, "speeds:"));
-    CHECK(!shows(small, "Lyapunov one"));
-    // Two rows more: both lines, and the histogram below them.
-    const gas::TextScreen tall = screen_of(rows + 2);
-    CHECK(shows(tall, "speeds:"));
+    while (rows < 60 && shows(screen_of(rows), "more with")) ++rows;
+    const gas::TextScreen tall = screen_of(rows);
     CHECK(shows(tall, "Lyapunov one"));
     CHECK(shows(tall, "Lyapunov two"));
+    CHECK(shows(tall, "speeds:"));
+    const gas::TextScreen shorter = screen_of(rows - 1);
+    CHECK(shows(shorter, "speeds:"));
+    CHECK(!shows(shorter, "Lyapunov two"));
+    CHECK(shows(shorter, fmt::format("more with {} rows: Lyapunov", rows + 2)));
   }
 }

@@ -214,7 +214,8 @@ TEST_SUITE("stage2") {
     const std::string ball = "ball 50 50 1 0\n";
     const std::vector<std::pair<std::string, std::string>> lines = {
         {"a", "a 4\n"}, {"T0", "T0 1\n"}, {"A1", "A1 100\n"}, {"A2", "A2 100\n"}};
-    for (const auto& [missing, _] : lines) {
+    for (const auto& left_out : lines) {
+      const std::string& missing = left_out.first;
       CAPTURE(missing);
       std::string text;
       for (const auto& [keyword, line] : lines) {

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -96,12 +97,16 @@ std::string contents(std::FILE* file) {
 }
 
 // A small model of an ANSI terminal, enough to replay what Display sends:
-// cursor moves ESC[r;cH, ESC[H, clear ESC[2J, and the escapes it ignores
-// (cursor shown/hidden, colours). It counts the characters it prints.
+// cursor moves ESC[r;cH, ESC[H, clear ESC[2J, erase a line ESC[2K, colours
+// (ESC[...m: which cells were printed coloured), and the escapes it ignores
+// (cursor shown/hidden). It counts the characters it prints.
 struct Terminal {
   std::vector<std::string> lines = std::vector<std::string>(40, std::string(100, ' '));
+  std::vector<std::vector<bool>> coloured =
+      std::vector<std::vector<bool>>(40, std::vector<bool>(100, false));
   int row = 0, column = 0;
   int printed = 0;
+  bool colour_on = false;
 
   void replay(const std::string& out) {
     printed = 0;
@@ -123,11 +128,17 @@ struct Terminal {
           column = c - 1;
         } else if (command == 'J') {
           for (std::string& line : lines) line.assign(line.size(), ' ');
-        }  // 'l', 'h' (cursor), 'm' (colour): nothing to model
+        } else if (command == 'K') {
+          lines.at(static_cast<std::size_t>(row)).assign(100, ' ');
+        } else if (command == 'm') {
+          colour_on = !(arguments.empty() || arguments == "0");
+        }  // 'l', 'h' (cursor): nothing to model
         i = end;
       } else {
         lines.at(static_cast<std::size_t>(row)).at(static_cast<std::size_t>(column)) =
             out[i];
+        coloured.at(static_cast<std::size_t>(row)).at(static_cast<std::size_t>(column)) =
+            colour_on;
         ++column;
         ++printed;
       }
@@ -355,9 +366,9 @@ TEST_SUITE("stage6") {
     TextScreen screen = gas::prepare_character_screen(12, 5);
     gas::Display display(file, false,
                          true);  // colour is asked for, but never used off a terminal
-    display.show(screen, "status one", gas::tones[0]);
+    display.show(screen, "status one", &gas::tones[0]);
     screen.at({3, 2}) = gas::tones[0].ball_glyph;
-    display.show(screen, "status two", gas::tones[0]);
+    display.show(screen, "status two", &gas::tones[0]);
     display.finish();
     std::string expected = "status one\n";
     for (const std::string& line : gas::prepare_character_screen(12, 5).lines)
@@ -377,7 +388,7 @@ TEST_SUITE("stage6") {
     Terminal terminal;
     long written = 0;
     auto show = [&](const std::string& status) {
-      display.show(screen, status, tone);
+      display.show(screen, status, &tone);
       const std::string all = contents(file);
       const std::string out = all.substr(static_cast<std::size_t>(written));
       written = static_cast<long>(all.size());
@@ -431,7 +442,7 @@ TEST_SUITE("stage6") {
     gas::Display display(file, true, false);
     display.fit_window(20, 8);  // 20 columns; 7 rows of frame, the cursor's below
     const std::string status = "T=0 a status line longer than the window";
-    display.show(screen, status, gas::tones[0]);
+    display.show(screen, status, &gas::tones[0]);
     Terminal terminal;
     terminal.replay(contents(file));
     // The frame's top left, cut: the status line and six rows of the screen.
@@ -442,17 +453,21 @@ TEST_SUITE("stage6") {
       CHECK(terminal.lines[r] == std::string(terminal.lines[r].size(), ' '));
     CHECK(terminal.printed == 20 * 7);
 
-    // notice(): the screen cleared and one line, cut to the window; sent once.
+    // notice(): the screen cleared and the words fitted to the window, the
+    // size kept whole; sent once.
+    const std::vector<std::string> words = {
+        "window", "too", "small:", "at", "least", "8 x 7"};
     const std::size_t before = contents(file).size();
     std::fseek(file, 0, SEEK_END);
-    display.notice("window too small: at least 8 x 7");
+    display.notice(words);
     terminal.replay(contents(file).substr(before));
     CHECK(terminal.lines[0].substr(0, 21) == "window too small: at ");
-    for (std::size_t r = 1; r < terminal.lines.size(); ++r)
+    CHECK(terminal.lines[1].substr(0, 21) == "least 8 x 7          ");
+    for (std::size_t r = 2; r < terminal.lines.size(); ++r)
       CHECK(terminal.lines[r] == std::string(terminal.lines[r].size(), ' '));
     std::fseek(file, 0, SEEK_END);
     const long after = std::ftell(file);
-    display.notice("window too small: at least 8 x 7");
+    display.notice(words);
     std::fseek(file, 0, SEEK_END);
     CHECK(std::ftell(file) == after);
     std::fclose(file);
@@ -465,7 +480,7 @@ TEST_SUITE("stage6") {
     TextScreen screen = gas::prepare_character_screen(20, 6);
     screen.at({5, 2}) = gas::tones[1].ball_glyph;
     gas::Display display(file, true, true);
-    display.show(screen, "T=0", gas::tones[1]);
+    display.show(screen, "T=0", &gas::tones[1]);
     const std::string out = contents(file);
     CHECK(out.find(fmt::format("\x1b[1;{}m{}\x1b[0m", gas::tones[1].ansi_colour,
                                gas::tones[1].ball_glyph)) != std::string::npos);
@@ -473,6 +488,124 @@ TEST_SUITE("stage6") {
     terminal.replay(out);
     CHECK(terminal.shows("T=0", screen));
     std::fclose(file);
+  }
+
+  TEST_CASE(
+      "Display colours the table's glyphs only: not the status line or border or keys or "
+      "figures") {
+    // Tone 1's trail glyph is '+', the border's corner; tone 0's is '.', a
+    // decimal point: only the cells inside the table take their colour.
+    for (const gas::Tone& tone : gas::tones) {
+      CAPTURE(tone.trail_glyph);
+      std::FILE* file = std::tmpfile();
+      REQUIRE(file != nullptr);
+      TextScreen screen = gas::prepare_character_screen(20, 6);
+      screen.at({5, 2}) = tone.ball_glyph;
+      screen.at({6, 2}) = tone.trail_glyph;
+      gas::Display display(file, true, true);
+      display.keys_below({"keys: S stop . + @ O"});
+      display.show(screen, "T=1.5 +.O@ screen", &tone);
+      Terminal terminal;
+      terminal.replay(contents(file));
+      for (std::size_t r = 0; r < 8; ++r) {
+        for (std::size_t c = 0; c < 20; ++c) {
+          CAPTURE(r);
+          CAPTURE(c);
+          const bool in_table = (r == 3 && (c == 5 || c == 6));
+          CHECK(terminal.coloured[r][c] == in_table);
+        }
+      }
+      CHECK(terminal.lines[7].substr(0, 20) == "keys: S stop . + @ O");
+      std::fclose(file);
+    }
+    // A screen of figures: no tone, nothing coloured.
+    std::FILE* file = std::tmpfile();
+    REQUIRE(file != nullptr);
+    TextScreen screen = gas::prepare_character_screen(20, 6);
+    gas::write_text(screen, 1, "P 0.5 +- 0.25 O @");
+    gas::Display display(file, true, true);
+    display.show(screen, "T=1.5", nullptr);
+    CHECK_FALSE(std::regex_search(contents(file), std::regex("\x1b\\[[0-9;]*m")));
+    std::fclose(file);
+  }
+
+  TEST_CASE(
+      "Display's key line: under the frame where the window has the row, and wiped at "
+      "the "
+      "end") {
+    const std::vector<std::string> forms = {"keys: S stop  R run  E end", "keys: S R E"};
+    auto run = [&](int columns, int rows) {
+      std::FILE* file = std::tmpfile();
+      REQUIRE(file != nullptr);
+      const TextScreen screen = gas::prepare_character_screen(20, 6);
+      gas::Display display(file, true, false);
+      display.fit_window(columns, rows);
+      display.keys_below(forms);
+      display.show(screen, "T=0", &gas::tones[0]);
+      Terminal terminal;
+      terminal.replay(contents(file));
+      std::fclose(file);
+      return terminal;
+    };
+    // A window of 30 x 8: the status line, the 6 rows of the frame, the keys.
+    const Terminal wide = run(30, 8);
+    CHECK(wide.lines[7].substr(0, 27) == "keys: S stop  R run  E end ");
+    CHECK(wide.row == 7);  // the cursor parked on the key line, not below it
+    // 20 columns: the short form.
+    CHECK(run(20, 8).lines[7].substr(0, 12) == "keys: S R E ");
+    // 8 columns: the short form cut.
+    CHECK(run(8, 8).lines[7].substr(0, 9) == "keys: S  ");
+    // 7 rows: the frame cut to the window but its last row, the keys there.
+    const Terminal full = run(30, 7);
+    CHECK(full.lines[6].substr(0, 12) == "keys: S stop");
+    CHECK(full.lines[5].substr(0, 20) == "|                  |");  // the frame's 5th row
+    // finish(): the key line wiped, for the shell's prompt.
+    std::FILE* file = std::tmpfile();
+    REQUIRE(file != nullptr);
+    gas::Display display(file, true, false);
+    display.fit_window(30, 8);
+    display.keys_below(forms);
+    display.show(gas::prepare_character_screen(20, 6), "T=0", &gas::tones[0]);
+    display.finish();
+    Terminal terminal;
+    terminal.replay(contents(file));
+    CHECK(terminal.lines[7] == std::string(100, ' '));
+    CHECK(terminal.lines[6].substr(0, 20) == "+------------------+");
+    std::fclose(file);
+    // Printed whole: the key line after each frame, and a stopped tick's
+    // status line alone.
+    std::FILE* plain = std::tmpfile();
+    REQUIRE(plain != nullptr);
+    gas::Display printed(plain, false, true);
+    printed.keys_below(forms);
+    const TextScreen screen = gas::prepare_character_screen(12, 5);
+    printed.show(screen, "T=0", &gas::tones[0]);
+    printed.status_only("T=0 [stopped]");
+    std::string expected = "T=0\n";
+    for (const std::string& line : screen.lines) expected += line + "\n";
+    expected += forms[0] + "\nT=0 [stopped]\n";
+    CHECK(contents(plain) == expected);
+    CHECK(contents(plain).find('\x1b') == std::string::npos);
+    std::fclose(plain);
+  }
+
+  TEST_CASE(
+      "fit_words: a line of words a row and the last words kept when rows are few") {
+    const std::vector<std::string> words = {
+        "window", "too", "small:", "at", "least", "8 x 7"};
+    using Lines = std::vector<std::string>;
+    CHECK(gas::fit_words(words, 80, 5) == Lines{"window too small: at least 8 x 7"});
+    CHECK(gas::fit_words(words, 0, 0) == Lines{"window too small: at least 8 x 7"});
+    CHECK(gas::fit_words(words, 20, 5) == Lines{"window too small: at", "least 8 x 7"});
+    // A word is never split: "8 x 7" stays whole.
+    CHECK(gas::fit_words(words, 10, 5) ==
+          Lines{"window too", "small: at", "least", "8 x 7"});
+    // Too few rows: words left out from the front, the size kept.
+    CHECK(gas::fit_words(words, 10, 2) == Lines{"at least", "8 x 7"});
+    CHECK(gas::fit_words(words, 10, 1) == Lines{"8 x 7"});
+    CHECK(gas::fit_words(words, 5, 1) == Lines{"8 x 7"});
+    // A word wider than the window is cut.
+    CHECK(gas::fit_words(words, 3, 1) == Lines{"8 x"});
   }
 
   TEST_CASE(

@@ -295,10 +295,11 @@ TEST_SUITE("stage7") {
   }
 
   TEST_CASE("key B on a stopped model: reverse, change the tone, and go on computing") {
-    // The article's B: 「すべての速度を逆にし, 基本色の色調を変えて計算過程を実行
-    // する」 — reverse every velocity, change the base colour's tone, and run
-    // the computation. Pressed on a stopped model it starts it, as R would;
-    // on a running one it leaves it running.
+    // The article's B: 「すべての速度を逆にし, 基本色の色調を変えて計算過程を実行する」
+    // — reverse every velocity, change the base colour's tone, and carry out
+    // the computation. Our reading (lessons/README.md, glossary): pressed on
+    // a stopped model it starts it, as R would; on a running one it leaves
+    // it running.
     gas::Control c = default_scene();
     gas::take_step(c, gas::never, nullptr);
     const std::vector<gas::Ball> before = c.gas.balls;

@@ -12,7 +12,12 @@
 //   whole, still refuses it);
 // - --cols and --rows keep their size in a smaller window, and the frame is
 //   cut at the window's edges;
-// - E still ends the run with status 0, and the cursor is shown again.
+// - E still ends the run with status 0, and the cursor is shown again;
+// - what a newcomer meets at 80 x 24: the key line under the table, colour on
+//   the table's glyphs only (never the status line, the border, the keys or
+//   the figures), the statistics screen with its histogram and one line
+//   naming what a taller window adds; a window of 20 x 6 keeps the size it
+//   asks for; TERM=dumb gets plain frames with no escape byte at all.
 // Every wait is bounded: a program that hangs is killed and the test fails.
 #include <doctest/doctest.h>
 #include <fcntl.h>
@@ -23,7 +28,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <functional>
 #include <optional>
 #include <string>
@@ -33,10 +40,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// build/gas running on a pseudo-terminal; killed if still running at the end.
+// build/gas running on a pseudo-terminal, with TERM=xterm and colour (no
+// NO_COLOR) unless `environment` says otherwise ("NAME=value", or "NAME"
+// alone: unset); killed if still running at the end.
 class PtyRun {
  public:
-  PtyRun(int columns, int rows, const std::vector<std::string>& arguments) {
+  PtyRun(int columns, int rows, const std::vector<std::string>& arguments,
+         const std::vector<std::string>& environment = {}) {
     winsize size{};
     size.ws_col = static_cast<unsigned short>(columns);
     size.ws_row = static_cast<unsigned short>(rows);
@@ -48,6 +58,17 @@ class PtyRun {
       std::vector<char*> argv;
       for (std::string& word : words) argv.push_back(word.data());
       argv.push_back(nullptr);
+      setenv("TERM", "xterm", 1);
+      unsetenv("NO_COLOR");
+      for (const std::string& setting : environment) {
+        const std::size_t equals = setting.find('=');
+        if (equals == std::string::npos) {
+          unsetenv(setting.c_str());
+        } else {
+          setenv(setting.substr(0, equals).c_str(), setting.substr(equals + 1).c_str(),
+                 1);
+        }
+      }
       if (chdir(GAS_SOURCE_DIR) != 0) _exit(126);
       execv(GAS_PROGRAM, argv.data());
       _exit(127);
@@ -137,7 +158,9 @@ struct Terminal {
       : columns(columns_),
         rows(rows_),
         lines(static_cast<std::size_t>(rows_),
-              std::string(static_cast<std::size_t>(columns_), ' ')) {}
+              std::string(static_cast<std::size_t>(columns_), ' ')),
+        coloured(static_cast<std::size_t>(rows_),
+                 std::vector<bool>(static_cast<std::size_t>(columns_), false)) {}
 
   void play(const std::string& text) {
     for (std::size_t k = 0; k < text.size(); ++k) {
@@ -160,6 +183,8 @@ struct Terminal {
         } else {
           lines[static_cast<std::size_t>(row - 1)][static_cast<std::size_t>(column - 1)] =
               c;
+          coloured[static_cast<std::size_t>(row - 1)]
+                  [static_cast<std::size_t>(column - 1)] = colour_on;
         }
         ++column;
       }
@@ -179,7 +204,19 @@ struct Terminal {
       if (row > rows || column > columns) ++moves_outside;
     } else if (final == 'J' && parameters == "2") {
       for (std::string& line : lines) line.assign(static_cast<std::size_t>(columns), ' ');
-    }  // colours ('m') and the cursor shown or hidden ('h', 'l') change no cell
+      for (auto& line : coloured) line.assign(static_cast<std::size_t>(columns), false);
+    } else if (final == 'K' && row >= 1 && row <= rows) {
+      lines[static_cast<std::size_t>(row - 1)].assign(static_cast<std::size_t>(columns),
+                                                      ' ');
+    } else if (final == 'm') {
+      colour_on = !(parameters.empty() || parameters == "0");
+    }  // the cursor shown or hidden ('h', 'l') changes no cell
+  }
+
+  // How many cells of row `n` (from 1) were last written in colour.
+  int coloured_in(int n) const {
+    const auto& line = coloured[static_cast<std::size_t>(n - 1)];
+    return static_cast<int>(std::count(line.begin(), line.end(), true));
   }
 
   // Row `n` (from 1) without its trailing blanks.
@@ -192,6 +229,8 @@ struct Terminal {
   int columns;
   int rows;
   std::vector<std::string> lines;
+  std::vector<std::vector<bool>> coloured;  // cells last written in colour
+  bool colour_on = false;
   int row = 1;
   int column = 1;
   int outside = 0;        // characters written outside the window
@@ -353,5 +392,100 @@ TEST_SUITE("console") {
     CHECK(after->line(2).find_first_not_of('-', 1) == std::string::npos);
     run.type("E");
     CHECK(run.wait_exit(5000) == 0);
+  }
+  TEST_CASE(
+      "at 80 x 24 the key line under the table and colour on the balls only never the "
+      "status line") {
+    PtyRun run(80, 24, {"data/crowd.scene"});
+    const auto drawn = [&] {
+      return run.output().find("keys: S stop") != std::string::npos;
+    };
+    REQUIRE_MESSAGE(run.read_until(drawn, 8000), "no key line");
+    run.read_for(500);
+    const auto screen = last_screen(run.output(), 0, 80, 24);
+    REQUIRE(screen);
+    CHECK(shows_whole_frame(*screen));
+    CHECK(screen->line(24) ==
+          "keys: S stop  R run  B reverse  > T0x2  < T0/2  0 redraw  E end");
+    // The balls in colour; the status line (whose T has a '.', tone 0's
+    // trail glyph), the border and the keys not.
+    int balls = 0;
+    for (int n = 3; n <= 22; ++n) balls += screen->coloured_in(n);
+    CHECK(balls > 0);
+    for (const int n : {1, 2, 23, 24}) {
+      CAPTURE(n);
+      CHECK(screen->coloured_in(n) == 0);
+    }
+    // The frames after the first, sent as changes: no colour code in the
+    // status line either (row 1 is only ever written without colour).
+    Terminal all(80, 24);
+    all.play(run.output());
+    CHECK(all.coloured_in(1) == 0);
+    run.type("E");
+    CHECK(run.wait_exit(5000) == 0);
+  }
+
+  TEST_CASE(
+      "at 80 x 24 the statistics screen shows the histogram and names what it leaves "
+      "out") {
+    PtyRun run(80, 24, {"data/large-1000.scene", "--mode", "stats"});
+    const auto drawn = [&] {
+      return run.output().find("more with") != std::string::npos;
+    };
+    REQUIRE_MESSAGE(run.read_until(drawn, 8000), "no statistics screen");
+    run.read_for(300);
+    const auto screen = last_screen(run.output(), 0, 80, 24);
+    REQUIRE(screen);
+    bool histogram = false;
+    for (int n = 3; n <= 22; ++n)
+      histogram |=
+          screen->line(n).rfind("| speeds: # measured  * Maxwell-Boltzmann", 0) == 0;
+    CHECK(histogram);
+    CHECK(screen->line(22).rfind("| more with ", 0) == 0);
+    CHECK(screen->line(22).find("Lyapunov") != std::string::npos);
+    CHECK(screen->line(24).find("A new averages") != std::string::npos);
+    // A screen of figures: nothing in colour (their '.' and '+' are no balls).
+    Terminal all(80, 24);
+    all.play(run.output());
+    for (int n = 1; n <= 24; ++n) {
+      CAPTURE(n);
+      CHECK(all.coloured_in(n) == 0);
+    }
+    run.type("E");
+    CHECK(run.wait_exit(5000) == 0);
+  }
+
+  TEST_CASE("a window of 20 x 6 is too small and says so with the size it needs") {
+    PtyRun run(20, 6, {});
+    const auto said = [&] { return run.output().find("8 x 7") != std::string::npos; };
+    REQUIRE_MESSAGE(run.read_until(said, 3000), "no size in the notice");
+    run.read_for(200);
+    const auto small = last_screen(run.output(), 0, 20, 6);
+    REQUIRE(small);
+    CHECK(small->outside == 0);
+    CHECK(small->line(1) == "window too small: at");
+    CHECK(small->line(2) == "least 8 x 7");
+    run.type("E");
+    CHECK(run.wait_exit(5000) == 0);
+  }
+
+  TEST_CASE("TERM=dumb on a terminal: plain frames and not one escape byte") {
+    PtyRun run(80, 24, {"data/crowd.scene", "--frames", "3"}, {"TERM=dumb"});
+    CHECK(run.wait_exit(5000) == 0);
+    CHECK(run.output().find('\x1b') == std::string::npos);
+    // Three frames, each headed by its status line (the terminal ends lines
+    // with \r\n).
+    std::size_t frames = 0;
+    for (std::size_t at = run.output().find("T="); at != std::string::npos;
+         at = run.output().find("\nT=", at + 1))
+      ++frames;
+    CHECK(frames == 3);
+    CHECK(run.output().find("+------") != std::string::npos);
+    // And the same for a TERM that is unset, and with keys on the keyboard:
+    // the key line follows each frame.
+    PtyRun unset(80, 24, {"data/crowd.scene", "--frames", "2"}, {"TERM"});
+    CHECK(unset.wait_exit(5000) == 0);
+    CHECK(unset.output().find('\x1b') == std::string::npos);
+    CHECK(unset.output().find("keys: S stop") != std::string::npos);
   }
 }

@@ -7,7 +7,9 @@
 //   that an answer cannot be shaped to.
 // - Failure messages that say everything: CHECK_NUMBER says the inputs, the
 //   value wanted and the value your code gave, each to 17 significant digits
-//   (enough to tell any two doubles apart), and how far apart they are.
+//   (enough to tell any two doubles apart), and how far apart they are; and
+//   when your code gave NaN (the untouched stub's placeholder), what to
+//   write instead, read from the stub's TODO.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -16,6 +18,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <random>
 #include <string>
@@ -76,14 +80,21 @@ inline std::string column_of_r(const Ball& ball) {
                      digits(ball.vx), digits(ball.vy), digits(ball.since));
 }
 
-// Every ball of a gas, one per line, after T and the table.
+// The balls a failed check lists, at most: enough to see a case by, and a
+// failure of 60 balls still reads on a screen.
+inline constexpr std::size_t balls_listed = 12;
+
+// The balls of a gas, one per line (the first balls_listed), after T and
+// the table.
 inline std::string describe(const Gas& gas) {
   std::string text =
       fmt::format("a gas of {} ball{} at T = {} (a = {}, A1 = {}, A2 = {})",
                   gas.balls.size(), gas.balls.size() == 1 ? "" : "s", digits(gas.time),
                   digits(gas.radius), digits(gas.width), digits(gas.height));
-  for (std::size_t i = 0; i < gas.balls.size(); ++i)
+  for (std::size_t i = 0; i < gas.balls.size() && i < balls_listed; ++i)
     text += fmt::format("\n    ball {}: {}", i + 1, column_of_r(gas.balls[i]));
+  if (gas.balls.size() > balls_listed)
+    text += fmt::format("\n    ... and {} balls more", gas.balls.size() - balls_listed);
   return text;
 }
 
@@ -96,11 +107,61 @@ inline bool agrees(double got, double wanted, double relative, double absolute =
          std::fabs(got - wanted) <= std::max(relative * std::fabs(wanted), absolute);
 }
 
+// What the stub beside the test file `test_file` (NN-name/test_name.cpp:
+// NN-name/name.cpp) asks for: its "// TODO:" comment, on one line; empty if
+// it has none (the student's own code, say).
+inline std::string task_of_stub(const std::string& test_file) {
+  const std::filesystem::path test(test_file);
+  std::string stem = test.stem().string();
+  stem.erase(0, stem.find('_') + 1);  // test_name -> name
+  std::ifstream stub(test.parent_path() / (stem + ".cpp"));
+  std::string line, task;
+  bool inside = false;
+  // The TODO's lines: comments alone on their lines, from "// TODO:" on.
+  while (std::getline(stub, line)) {
+    const std::size_t start = line.find_first_not_of(' ');
+    if (start == std::string::npos || line.compare(start, 2, "//") != 0) {
+      if (inside) break;
+      continue;
+    }
+    std::string words = line.substr(start + 2);
+    words.erase(0, words.find_first_not_of(' '));
+    if (words.rfind("TODO:", 0) == 0) {
+      inside = true;
+      words.erase(0, 5);
+      words.erase(0, words.find_first_not_of(' '));
+    } else if (!inside) {
+      continue;
+    }
+    task += (task.empty() ? "" : " ") + words;
+  }
+  return task;
+}
+
+// What a result of NaN ("not a number") says: most likely the untouched
+// stub's placeholder, and then what to write instead.
+inline std::string about_nan(const std::string& test_file) {
+  const std::string task = task_of_stub(test_file);
+  const std::string stub =
+      std::filesystem::path(test_file).parent_path().filename().string();
+  return fmt::format(
+      "\n  NaN is \"not a number\": the stub's placeholder, while the function is "
+      "not written yet.{}\n  (Written already? Then look for 0 / 0, inf - inf or the "
+      "square root of a negative number.)",
+      task.empty() ? fmt::format(" What to write: {}/instructions.md.", stub)
+                   : fmt::format("\n  What to write: {}", task));
+}
+
 // What a failed check says: the inputs, the value wanted, the value got,
-// and how far apart they are.
-inline std::string compared(const std::string& inputs, double wanted, double got) {
+// and how far apart they are; for a NaN, what it means (`test_file`: the
+// test's own file, __FILE__, whose stub says what to write).
+inline std::string compared(const std::string& inputs, double wanted, double got,
+                            const std::string& test_file = {}) {
+  // No check wants NaN: a wanted NaN came from your own code, on other input.
   std::string text =
-      fmt::format("{}\n  wanted {}\n  got    {}", inputs, digits(wanted), digits(got));
+      fmt::format("{}\n  wanted {}{}\n  got    {}", inputs, digits(wanted),
+                  std::isnan(wanted) ? " (your function's own answer)" : "", digits(got));
+  if (std::isnan(got) && !test_file.empty()) text += about_nan(test_file);
   if (std::isfinite(wanted) && std::isfinite(got) && wanted != 0) {
     const double off = std::fabs(got - wanted) / std::fabs(wanted);
     text += fmt::format("  (off by {:.2g} of the value wanted)", off);
@@ -129,7 +190,8 @@ inline std::string compared(const std::string& inputs, double wanted, double got
     const double got_value = (got), wanted_value = (wanted);                            \
     const bool agrees =                                                                 \
         gas::exercises::agrees(got_value, wanted_value, (relative), (absolute));        \
-    CHECK_MESSAGE(agrees, gas::exercises::compared((inputs), wanted_value, got_value)); \
+    CHECK_MESSAGE(                                                                      \
+        agrees, gas::exercises::compared((inputs), wanted_value, got_value, __FILE__)); \
     return agrees;                                                                      \
   }()
 

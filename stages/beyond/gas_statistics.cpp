@@ -452,6 +452,17 @@ Average& GasStatistics::average_of(MeasuredFigures& m, Quantity q) {
   throw std::logic_error("GasStatistics: no such quantity");
 }
 
+Average average_with_error(const BlockingAnalysis& samples, double scale) {
+  Average average{scale * samples.mean(), scale * samples.error()};
+  average.status = samples.status();
+  average.batch_error = scale * samples.batch_error();
+  if (std::isnan(average.error)) {
+    average.why_no_error =
+        average.status == ErrorStatus::few_samples ? "few samples" : "not yet";
+  }
+  return average;
+}
+
 MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   MeasuredFigures m;
   // H of the speeds now: from the histogram's counts.
@@ -469,21 +480,14 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   if (!(s.duration > 0)) return m;
   for (int q = 0; q < quantity_count; ++q) {
     Average& average = average_of(m, static_cast<Quantity>(q));
+    average = average_with_error(blocking_[static_cast<std::size_t>(q)]);
     average.value = value_of(static_cast<Quantity>(q), s);
-    const BlockingAnalysis& blocking = blocking_[static_cast<std::size_t>(q)];
-    average.error = blocking.error();
-    average.status = blocking.status();
-    average.batch_error = blocking.batch_error();
   }
   // The snapshots' averages.
-  const BlockingAnalysis& pair = structure_.pair_contact();
-  const BlockingAnalysis& wall = structure_.wall_contact_density();
-  m.pair_contact = {pair.mean(), pair.error(), pair.status(), pair.batch_error()};
-  const BlockingAnalysis& pair_difference = structure_.pair_contact_minus_theory();
-  m.pair_contact_minus_theory = {pair_difference.mean(), pair_difference.error(),
-                                 pair_difference.status(), pair_difference.batch_error()};
-  m.wall_contact_pressure = {kT_ * wall.mean(), kT_ * wall.error(), wall.status(),
-                             kT_ * wall.batch_error()};
+  m.pair_contact = average_with_error(structure_.pair_contact());
+  m.pair_contact_minus_theory =
+      average_with_error(structure_.pair_contact_minus_theory());
+  m.wall_contact_pressure = average_with_error(structure_.wall_contact_density(), kT_);
   // The histogram: the ball-time fraction of each bin, to now.
   const double ball_time = s.duration * static_cast<double>(balls_);
   for (std::size_t b = 0; b < bin_count_.size(); ++b) {

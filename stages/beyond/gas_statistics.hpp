@@ -35,16 +35,25 @@ inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 
 // A time average and its statistical error (one standard error, from a
 // blocking analysis); the error is not known (NaN) until the analysis finds
-// it, the value not known before the averages start.
+// it, the value not known before the averages start. While the error is
+// blank, `why_no_error` may say why in a few words, which the statistics
+// screen shows in its place: "few samples" (fewer than the blocking's 16),
+// "not yet" (its batches are shorter than the table's heat time, or still
+// look correlated: the run must go on).
 struct Average {
   double value = not_known;
   double error = not_known;
+  const char* why_no_error = nullptr;  // a short reason, or none
   // Why the error is not known, or that it is (beyond/blocking.hpp).
   ErrorStatus status = ErrorStatus::few_samples;
   // What the batches alone would claim (BlockingAnalysis::batch_error): the
   // error once it is known; before, a figure too short to trust.
   double batch_error = not_known;
 };
+
+// The mean of `samples` times `scale`, with its error by the blocking rule,
+// and while that is not known the reason (few samples, or not yet).
+Average average_with_error(const BlockingAnalysis& samples, double scale = 1);
 
 // The warm-up: how many collisions of two balls, per ball, are left out of
 // the averages (each such collision counts for both its balls). A start on a

@@ -11,8 +11,8 @@
 // B2 ... B10 (Z is their series to 2e-9 at eta = 0.1 and to 5e-5, what the
 // series leaves out, at 0.3) and simulations at
 // eta = 0.67 ... 0.70 (within 0.06 %); see hard_disc_fluid.cpp.
-// Article: none; the article ("Gas on the display", Kvant 1989) predicts no
-// pressure. Everything here is beyond it.
+// Article: none; the article ("Gas on the display") predicts no pressure.
+// Everything here is beyond it.
 // Lesson: lessons/13-box-and-bulk.md
 //
 // The reference (sources checked, and how, in hard_disc_fluid.cpp):

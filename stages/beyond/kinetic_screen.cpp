@@ -2,6 +2,7 @@
 #include "beyond/kinetic_screen.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +45,9 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   k.bulk_z_shift = fixed_count_shift(eta, balls);
   const double z = fixed_count_compressibility(eta, balls);
   const double slope = hard_disc_fluid_compressibility_slope(eta);  // dZ / d eta
-  k.bulk_z_theory = {z, std::abs(slope) * eta_error};
+  // (A theory's error is eta's carried over: blank while eta's is, for its reason.)
+  const char* const why = m.interior_area_fraction.why_no_error;
+  k.bulk_z_theory = {z, std::abs(slope) * eta_error, why};
   k.bulk_z_henderson = henderson_compressibility(eta);
   k.pair_contact_theory = hard_disc_fluid_contact_value(eta);
   // P = Z n kT, n = eta / (pi a^2): dP / d eta = (Z + eta Z') kT / (pi a^2);
@@ -57,7 +60,8 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
       z_beside * eta_beside * kT_beside / (pi * a * a),
       std::abs(z_beside +
                eta_beside * hard_disc_fluid_compressibility_slope(eta_beside)) *
-          kT_beside / (pi * a * a) * m.beside_walls_eta.error};
+          kT_beside / (pi * a * a) * m.beside_walls_eta.error,
+      m.beside_walls_eta.why_no_error};
   // Enskog: rate = 2 (2a) n g sqrt(pi kT) with n g = (Z - 1) / (2 eta) n
   // = (Z - 1) / (2 pi a^2), so d rate / d eta = Z' 2 sqrt(pi kT) / (pi a);
   // the free path lambda = sqrt(pi kT / 2) / rate moves the other way.
@@ -65,9 +69,9 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   const double rate = enskog_collision_rate(eta, a, kT) * factor;
   const double rate_error =
       std::abs(slope) * 2 * std::sqrt(pi * kT) / (pi * a) * eta_error;
-  k.collision_rate_theory = {rate, rate_error};
+  k.collision_rate_theory = {rate, rate_error, why};
   const double path = enskog_mean_free_path(eta, a) / factor;
-  k.mean_free_path_theory = {path, path * rate_error / rate};
+  k.mean_free_path_theory = {path, path * rate_error / rate, why};
   // The reference g(2a)'s uncertainty, from eta's: |dg/deta| x eta's error.
   k.pair_contact_theory_error =
       std::abs(hard_disc_fluid_contact_value_slope(eta)) * eta_error;
@@ -82,12 +86,21 @@ std::string shown(double value) {
   return std::isnan(value) ? std::string("-") : fmt::format("{:.5g}", value);
 }
 
-// An average and its error: "1.2345 +- 0.0012", or without the error while
-// it is not known.
+// A small shift with its sign, 2 significant digits, "-" when not known.
+std::string signed_shown(double value) {
+  return std::isnan(value) ? std::string("-") : fmt::format("{:+.2g}", value);
+}
+
+// An average and its error: "1.2345 +- 0.0012"; while the error is not
+// known, the reason in its place ("1.2345 +- not yet"), or the value alone
+// if none is given.
 std::string shown(const Average& average) {
   if (std::isnan(average.value)) return "-";
-  if (std::isnan(average.error)) return shown(average.value);
-  return fmt::format("{:.5g} +- {:.2g}", average.value, average.error).substr(0, 21);
+  if (!std::isnan(average.error))
+    return fmt::format("{:.5g} +- {:.2g}", average.value, average.error);
+  if (average.why_no_error != nullptr)
+    return fmt::format("{:.5g} +- {}", average.value, average.why_no_error);
+  return shown(average.value);
 }
 
 // Where the theory of the bulk does not apply to so few balls.
@@ -97,9 +110,9 @@ constexpr const char* few_balls = "needs many balls";
 
 // [anchor: draw-histogram]
 // The histogram of speeds in rows first_row ... last_row: a title, bars of
-// '#' (the measured fraction of ball-time in each speed bin), a '*' on each
-// column at the height of the 2D Maxwell-Boltzmann fraction for the same
-// bin, and an axis of speeds.
+// '#' (the measured fraction of ball-time in each speed bin; '^' tops a bar
+// too tall for the rows), a '*' on each column at the height of the 2D
+// Maxwell-Boltzmann fraction for the same bin, and an axis of speeds.
 void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
                     int last_row) {
   const int bar_rows = last_row - first_row - 1;  // less the title and the axis
@@ -127,9 +140,13 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
   auto height = [&](double fraction) {
     return static_cast<int>(std::lround(fraction / top * bar_rows));
   };
+  // The title says what the marks are, and how much of the ball-time went
+  // faster than the axis reaches (no bar of its own).
+  const std::string end = fmt::format("{:.3g}", shown_bins * width_shown);
   write_text(screen, first_row,
-             fmt::format("speeds: # measured, * 2D Maxwell-Boltzmann; {:.2g}% faster",
-                         100 * m.fraction_beyond));
+             fmt::format("speeds: # measured  * Maxwell-Boltzmann  ^ off scale  {:.2g}% "
+                         "faster than {}",
+                         100 * m.fraction_beyond, end));
   const int axis = last_row;
   for (int column = 2; column < 2 + shown_bins * span; ++column) {
     const auto b = static_cast<std::size_t>((column - 2) / span);
@@ -145,7 +162,6 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
   screen.at({2, axis}) = '0';
   const int mean_column =
       2 + static_cast<int>(k.theory.mean_speed / width_shown * span) - 1;
-  const std::string end = fmt::format("{:.3g}", shown_bins * width_shown);
   const int end_column = 2 + shown_bins * span - static_cast<int>(end.size());
   if (mean_column + 3 < end_column) {
     for (int k = 0; k < 3; ++k) screen.at({mean_column + k, axis}) = "<v>"[k];
@@ -155,234 +171,208 @@ void draw_histogram(TextScreen& screen, const KineticFigures& k, int first_row,
 }
 // [/anchor: draw-histogram]
 
-// [anchor: draw-kinetic-figures]
-void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k,
-                          const std::vector<std::string>& more_lines) {
-  const KineticTheory& t = k.theory;
-  const MeasuredFigures& m = k.measured;
-  // Each measured figure, its average since the averages started with its
-  // error, beside the theory of the same thing with the theory's error, and
-  // which theory. The bulk's theories only for many balls.
-  auto row = [](const char* label, const Average& average, const std::string& theory,
-                const std::string& source) {
-    return fmt::format("{:<18}{:<22}{:<21}{}", label, shown(average), theory, source);
-  };
-  auto bulk = [&](const char* label, const Average& average, const Average& theory,
-                  const std::string& source) {
-    return k.many_balls ? row(label, average, shown(theory), source)
-                        : row(label, average, few_balls, "");
-  };
-  // Z - Z_theory with its error, combined sample by sample (gas_statistics).
-  const std::string z_difference =
-      k.many_balls ? fmt::format("Z - reference {}", shown(m.bulk_z_minus_theory)) : "";
-  std::vector<std::string> lines = {
-      fmt::format("T {:.6f}  T0 {:g}  collisions {} (walls {}, balls {})", f.time,
-                  f.display_step, f.wall_collisions + f.ball_collisions,
-                  f.wall_collisions, f.ball_collisions),
-      fmt::format("N {}  eta {:.4f}  kT {:.5g}  drift {:+.1e}  momentum ({:.2g}, {:.2g})",
-                  f.balls, t.area_fraction, t.kT, f.energy_drift, f.momentum.x,
-                  f.momentum.y),
-      "units: a, mass 1, kT = E/N; P per unit length, rates per unit time",
-      fmt::format("speeds now: mean {}, rms {} (fixed by E)", shown(f.mean_speed),
-                  shown(k.rms_speed)),
-      k.many_balls
-          ? fmt::format("H {:.4f}  its noise for {} balls in {} bins: {:.2g} +- {:.2g}",
-                        m.h_now, f.balls, m.speed_fractions.size(), k.h_noise,
-                        k.h_noise_spread)
-          : fmt::format("H {:.4f}  (of {} speeds in {} bins: mostly noise)", m.h_now,
-                        f.balls, m.speed_fractions.size()),
-      m.warming_up
-          ? fmt::format(
-                "warming up: averages start after {} collisions of two balls a ball",
-                m.warm_up_collisions)
-          : fmt::format("averages over T {:.6g} ... {:.6g} (A restarts)", m.since,
-                        m.since + m.duration),
-      fmt::format("{:<18}{:<22}{:<21}{}", "", "average +- error", "theory +- error",
-                  "(theory)"),
-      row("mean speed", m.mean_speed, shown(t.mean_speed), "E fixed"),
-      bulk("P walls' middles", m.wall_middle_pressure, k.pressure_theory,
-           "bulk, reference"),
-      fmt::format("{:<18}{:<22}{:<21}{}", "P whole walls", shown(m.pressure_box),
-                  "(box, corners too)", ""),
-      fmt::format("{:<18}{:<22}{}", "  Px, Py (box)", shown(m.pressure_box_x),
-                  shown(m.pressure_box_y)),
-      fmt::format("{:<18}{:<22}{}", "Z box: walls, vir", shown(m.box_z_walls),
-                  shown(m.box_z_virial)),
-      bulk("Z bulk", m.bulk_z, k.bulk_z_theory,
-           std::isnan(k.bulk_z_shift) ? std::string("N fixed -")
-                                      : fmt::format("N fixed {:+.2g}", k.bulk_z_shift)),
-      fmt::format("{:<18}{:<22}{}", "  eta inside", shown(m.interior_area_fraction),
-                  z_difference),
-      row("  g(2a) inside", m.pair_contact,
-          k.many_balls ? shown(k.pair_contact_theory) : few_balls, "reference"),
-      row("kT n at walls", m.wall_contact_pressure, shown(m.wall_middle_pressure.value),
-          "P there"),
-      bulk("collisions/ball", m.collision_rate, k.collision_rate_theory,
-           "Enskog (inside)"),
-      fmt::format("{:<18}{:<22}{}", "  whole box", shown(m.collision_rate_box),
-                  "(box: walls too)"),
-      bulk("mean free path", m.mean_free_path, k.mean_free_path_theory,
-           "Enskog (inside)"),
-  };
-  // Other observers' lines after them, as many as leave the histogram its
-  // room: a blank row, a title, two rows of bars, the axis, and the border.
-  const auto room = static_cast<std::size_t>(
-      std::max(0, screen.rows - 7 - static_cast<int>(lines.size())));
-  lines.insert(lines.end(), more_lines.begin(),
-               more_lines.begin() +
-                   static_cast<std::ptrdiff_t>(std::min(room, more_lines.size())));
-  draw_figures(screen, lines);  // stage 6: the lines at their places
-  // Below them, after a blank row, the histogram, if there is room for it.
-  const int count = static_cast<int>(lines.size());
-  draw_histogram(screen, k, count + 2, screen.rows - 2);
-}
-// [/anchor: draw-kinetic-figures]
-
-// [anchor: csv-columns]
 namespace {
 
-// One column of --csv: its name and how its value is read from the figures.
-struct Column {
+// One line of the statistics screen: its text, its rank (the lower, the
+// sooner a student needs it: a short screen keeps the lowest ranks), and
+// the name the line of what is left out gives it.
+struct FigureLine {
+  std::string text;
+  int rank;
   const char* name;
-  double (*value)(const Figures& f, const KineticFigures& k);
 };
 
-// Readers for the columns: an average measured (its value or its error), a
-// theory with its error, a plain figure of kinetic theory.
-template <Average MeasuredFigures::*average>
-double measured_value(const Figures&, const KineticFigures& k) {
-  return (k.measured.*average).value;
-}
-template <Average MeasuredFigures::*average>
-double measured_error(const Figures&, const KineticFigures& k) {
-  return (k.measured.*average).error;
-}
-template <Average KineticFigures::*theory>
-double theory_value(const Figures&, const KineticFigures& k) {
-  return (k.*theory).value;
-}
-template <Average KineticFigures::*theory>
-double theory_error(const Figures&, const KineticFigures& k) {
-  return (k.*theory).error;
-}
-// A difference from the theory: only where the theory applies (many balls).
-template <Average MeasuredFigures::*average>
-double deviation_value(const Figures&, const KineticFigures& k) {
-  return k.many_balls ? (k.measured.*average).value : not_known;
-}
-template <Average MeasuredFigures::*average>
-double deviation_error(const Figures&, const KineticFigures& k) {
-  return k.many_balls ? (k.measured.*average).error : not_known;
-}
-template <double KineticFigures::*figure>
-double kinetic_value(const Figures&, const KineticFigures& k) {
-  return k.*figure;
+// The histogram's rank among the lines' (after the mean free path's).
+constexpr int histogram_rank = 9;
+
+// A row of the table: a label, the measured average with its error, the
+// theory of the same thing with its error, and the theory's name. The
+// columns start at fixed places (17, 41 and 61 characters in), each cut to
+// leave a blank before the next.
+std::string table_row(const char* label, const std::string& measured,
+                      const std::string& theory, const std::string& source) {
+  return fmt::format("{:<17}{:<24}{:<20}{}", label, measured.substr(0, 23),
+                     theory.substr(0, 19), source);
 }
 
-using M = MeasuredFigures;
-using K = KineticFigures;
+// The gas now (stage 6's figures), the units, H, and since when the
+// averages run; then the table's header.
+std::vector<FigureLine> heading_lines(const Figures& f, const KineticFigures& k) {
+  const KineticTheory& t = k.theory;
+  const MeasuredFigures& m = k.measured;
+  return {
+      {fmt::format(
+           "N {}  eta {:.4f}  kT {:.5g}  drift {:+.1e}  momentum ({:.2g}, {:.2g})",
+           f.balls, t.area_fraction, t.kT, f.energy_drift, f.momentum.x, f.momentum.y),
+       0, "N"},
+      {fmt::format("speeds now: mean {}, rms {} (fixed by E)", shown(f.mean_speed),
+                   shown(k.rms_speed)),
+       1, "speeds now"},
+      {"units: a, mass 1, kT = E/N; P per unit length, rates per unit time", 11, "units"},
+      {k.many_balls
+           ? fmt::format("H {:.4f}  its noise for {} balls in {} bins: {:.2g} +- {:.2g}",
+                         m.h_now, f.balls, m.speed_fractions.size(), k.h_noise,
+                         k.h_noise_spread)
+           : fmt::format("H {:.4f}  (of {} speeds in {} bins: mostly noise)", m.h_now,
+                         f.balls, m.speed_fractions.size()),
+       10, "H"},
+      {m.warming_up
+           ? fmt::format("warming up: averages start after {} pair collisions per ball",
+                         m.warm_up_collisions)
+           : fmt::format("averages over T {:.6g} ... {:.6g} (A restarts them)", m.since,
+                         m.since + m.duration),
+       2, "averages"},
+      {table_row("", "measured +- error", "theory +- error", "which theory"), 3,
+       "header"},
+  };
+}
 
-// The columns in order: the article's figures, then kinetic theory's (the
-// naming convention in data/README.md). A block of columns is appended at
-// the end.
-constexpr Column columns[] = {
-    {"T", [](const Figures& f, const KineticFigures&) { return f.time; }},
-    {"T0", [](const Figures& f, const KineticFigures&) { return f.display_step; }},
-    {"wall_collisions",
-     [](const Figures& f, const KineticFigures&) {
-       return static_cast<double>(f.wall_collisions);
-     }},
-    {"ball_collisions",
-     [](const Figures& f, const KineticFigures&) {
-       return static_cast<double>(f.ball_collisions);
-     }},
-    {"mean_speed", [](const Figures& f, const KineticFigures&) { return f.mean_speed; }},
-    {"energy", [](const Figures& f, const KineticFigures&) { return f.energy; }},
-    {"energy_drift",
-     [](const Figures& f, const KineticFigures&) { return f.energy_drift; }},
-    {"px", [](const Figures& f, const KineticFigures&) { return f.momentum.x; }},
-    {"py", [](const Figures& f, const KineticFigures&) { return f.momentum.y; }},
-    {"kT", [](const Figures&, const KineticFigures& k) { return k.theory.kT; }},
-    {"averages_since",
-     [](const Figures&, const KineticFigures& k) { return k.measured.since; }},
-    {"H", [](const Figures&, const KineticFigures& k) { return k.measured.h_now; }},
-    {"H_noise", kinetic_value<&K::h_noise>},
-    {"H_noise_spread", kinetic_value<&K::h_noise_spread>},
-    {"mean_speed_average", measured_value<&M::mean_speed>},
-    {"mean_speed_average_error", measured_error<&M::mean_speed>},
-    {"mean_speed_average_theory",
-     [](const Figures&, const KineticFigures& k) { return k.theory.mean_speed; }},
-    {"pressure", measured_value<&M::wall_middle_pressure>},
-    {"pressure_error", measured_error<&M::wall_middle_pressure>},
-    {"pressure_theory", theory_value<&K::pressure_theory>},
-    {"pressure_theory_error", theory_error<&K::pressure_theory>},
-    {"pressure_box", measured_value<&M::pressure_box>},
-    {"pressure_box_error", measured_error<&M::pressure_box>},
-    {"pressure_box_x", measured_value<&M::pressure_box_x>},
-    {"pressure_box_x_error", measured_error<&M::pressure_box_x>},
-    {"pressure_box_y", measured_value<&M::pressure_box_y>},
-    {"pressure_box_y_error", measured_error<&M::pressure_box_y>},
-    {"Z", measured_value<&M::bulk_z>},
-    {"Z_error", measured_error<&M::bulk_z>},
-    {"Z_theory", theory_value<&K::bulk_z_theory>},
-    {"Z_theory_error", theory_error<&K::bulk_z_theory>},
-    {"Z_deviation", deviation_value<&M::bulk_z_minus_theory>},
-    {"Z_deviation_error", deviation_error<&M::bulk_z_minus_theory>},
-    {"Z_henderson", kinetic_value<&K::bulk_z_henderson>},
-    {"eta_interior", measured_value<&M::interior_area_fraction>},
-    {"eta_interior_error", measured_error<&M::interior_area_fraction>},
-    {"kT_interior", measured_value<&M::interior_kT>},
-    {"kT_interior_error", measured_error<&M::interior_kT>},
-    {"Z_box_walls", measured_value<&M::box_z_walls>},
-    {"Z_box_walls_error", measured_error<&M::box_z_walls>},
-    {"Z_box_virial", measured_value<&M::box_z_virial>},
-    {"Z_box_virial_error", measured_error<&M::box_z_virial>},
-    {"collision_rate", measured_value<&M::collision_rate>},
-    {"collision_rate_error", measured_error<&M::collision_rate>},
-    {"collision_rate_theory", theory_value<&K::collision_rate_theory>},
-    {"collision_rate_theory_error", theory_error<&K::collision_rate_theory>},
-    {"collision_rate_deviation", deviation_value<&M::collision_rate_minus_theory>},
-    {"collision_rate_deviation_error", deviation_error<&M::collision_rate_minus_theory>},
-    {"collision_rate_box", measured_value<&M::collision_rate_box>},
-    {"collision_rate_box_error", measured_error<&M::collision_rate_box>},
-    {"mean_free_path", measured_value<&M::mean_free_path>},
-    {"mean_free_path_error", measured_error<&M::mean_free_path>},
-    {"mean_free_path_theory", theory_value<&K::mean_free_path_theory>},
-    {"mean_free_path_theory_error", theory_error<&K::mean_free_path_theory>},
-    {"g_contact", measured_value<&M::pair_contact>},
-    {"g_contact_error", measured_error<&M::pair_contact>},
-    {"g_contact_theory", kinetic_value<&K::pair_contact_theory>},
-    {"g_contact_theory_error", kinetic_value<&K::pair_contact_theory_error>},
-    {"wall_contact_pressure", measured_value<&M::wall_contact_pressure>},
-    {"wall_contact_pressure_error", measured_error<&M::wall_contact_pressure>},
-    {"pressure_deviation", deviation_value<&M::pressure_minus_theory>},
-    {"pressure_deviation_error", deviation_error<&M::pressure_minus_theory>},
-    {"mean_free_path_deviation", deviation_value<&M::mean_free_path_minus_theory>},
-    {"mean_free_path_deviation_error", deviation_error<&M::mean_free_path_minus_theory>},
-    {"g_contact_deviation", deviation_value<&M::pair_contact_minus_theory>},
-    {"g_contact_deviation_error", deviation_error<&M::pair_contact_minus_theory>},
-    {"Z_fixed_N_shift", kinetic_value<&K::bulk_z_shift>},
+// The table: each measured average beside the theory of the same thing.
+// The bulk's theories only for many balls.
+std::vector<FigureLine> table_lines(const KineticFigures& k) {
+  const KineticTheory& t = k.theory;
+  const MeasuredFigures& m = k.measured;
+  auto bulk = [&](const Average& theory) {
+    return k.many_balls ? shown(theory) : std::string(few_balls);
+  };
+  const Average contact_theory{k.pair_contact_theory, k.pair_contact_theory_error,
+                               m.interior_area_fraction.why_no_error};
+  return {
+      {table_row("mean speed", shown(m.mean_speed), shown(t.mean_speed), "E fixed"), 4,
+       "mean speed"},
+      {table_row("P walls' middles", shown(m.wall_middle_pressure),
+                 bulk(k.pressure_theory), k.many_balls ? "bulk, reference" : ""),
+       5, "P"},
+      {table_row("Z bulk", shown(m.bulk_z), bulk(k.bulk_z_theory),
+                 k.many_balls ? "Henderson " + shown(k.bulk_z_henderson) : ""),
+       6, "Z"},
+      // Z - Z_ref, sample by sample (its error is the smaller): 0 if the
+      // reference holds. The reference is for N balls in a closed box: the
+      // open bulk's shifted by fixed_count_shift, shown beside it.
+      {table_row("  Z - reference", k.many_balls ? shown(m.bulk_z_minus_theory) : "-",
+                 k.many_balls ? "0" : few_balls,
+                 k.many_balls ? "N fixed " + signed_shown(k.bulk_z_shift) : ""),
+       13, "Z - ref"},
+      {table_row("g(2a) inside", shown(m.pair_contact), bulk(contact_theory),
+                 k.many_balls ? "reference" : ""),
+       12, "g(2a)"},
+      {table_row("collision rate", shown(m.collision_rate), bulk(k.collision_rate_theory),
+                 k.many_balls ? "Enskog (inside)" : ""),
+       7, "rate"},
+      {table_row("mean free path", shown(m.mean_free_path), bulk(k.mean_free_path_theory),
+                 k.many_balls ? "Enskog (inside)" : ""),
+       8, "free path"},
+  };
+}
+
+// Figures measured with no theory beside them, each labelled in its line:
+// the interior the bulk's theories are taken at, the contact theorem at the
+// walls (two measurements that must agree), and the whole box.
+std::vector<FigureLine> measured_lines(const KineticFigures& k) {
+  const MeasuredFigures& m = k.measured;
+  return {
+      {fmt::format("inside: eta {}  kT {}", shown(m.interior_area_fraction),
+                   shown(m.interior_kT)),
+       14, "inside"},
+      {fmt::format("contact theorem at walls: kT n {} = P {}",
+                   shown(m.wall_contact_pressure), shown(m.wall_middle_pressure)),
+       15, "contact"},
+      {fmt::format("box: P {}  Px {}  Py {}", shown(m.pressure_box),
+                   shown(m.pressure_box_x), shown(m.pressure_box_y)),
+       16, "box"},
+      {fmt::format("box: Z from walls {}  from collisions {}", shown(m.box_z_walls),
+                   shown(m.box_z_virial)),
+       17, "box"},
+      {fmt::format("box: collision rate {} (walls' layers too)",
+                   shown(m.collision_rate_box)),
+       18, "box"},
+  };
+}
+
+// Which lines a screen of `rows` rows inside the border shows, and how
+// many rows the histogram gets (0: none).
+struct Layout {
+  std::vector<bool> kept;
+  int histogram_rows = 0;
+  bool gap = false;      // a blank row between the lines and the histogram
+  std::string left_out;  // the last row's text, when something is left out
 };
+
+// Everything when it fits (the histogram in all the rows left); else, in
+// the order of rank, each line and the histogram that still fits, a row kept
+// for the line that names what is left out.
+Layout lay_out(const std::vector<FigureLine>& lines, int rows) {
+  const int count = static_cast<int>(lines.size());
+  Layout layout;
+  if (count + histogram_least_rows <= rows) {
+    layout.kept.assign(lines.size(), true);
+    layout.gap = count + histogram_least_rows < rows;
+    layout.histogram_rows = rows - count - (layout.gap ? 1 : 0);
+    return layout;
+  }
+  layout.kept.assign(lines.size(), false);
+  int room = rows - 1;
+  bool histogram = false;
+  std::vector<std::size_t> order(lines.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
+    return lines[p].rank < lines[q].rank;
+  });
+  for (const std::size_t i : order) {
+    if (!histogram && lines[i].rank > histogram_rank && room >= histogram_least_rows) {
+      histogram = true;
+      room -= histogram_least_rows;
+    }
+    if (room >= 1) {
+      layout.kept[i] = true;
+      --room;
+    }
+  }
+  if (histogram) layout.histogram_rows = histogram_least_rows + room;
+  // The names of what is left out, each once, in the order of rank (a
+  // narrow screen cuts the least needed).
+  std::vector<std::string> names;
+  bool histogram_named = histogram;  // (shown: not named)
+  for (const std::size_t i : order) {
+    if (!histogram_named && lines[i].rank > histogram_rank) {
+      names.emplace_back("histogram");
+      histogram_named = true;
+    }
+    if (!layout.kept[i] &&
+        std::find(names.begin(), names.end(), lines[i].name) == names.end())
+      names.emplace_back(lines[i].name);
+  }
+  // The window all of it needs: the figures, the histogram, the border,
+  // the status line and the row under the frame.
+  layout.left_out = fmt::format("more with {} rows: {}", count + histogram_least_rows + 4,
+                                fmt::join(names, ", "));
+  return layout;
+}
 
 }  // namespace
 
-std::string csv_header() {
-  std::string header;
-  for (const Column& column : columns) {
-    if (!header.empty()) header += ',';
-    header += column.name;
+// [anchor: draw-kinetic-figures]
+void draw_kinetic_figures(TextScreen& screen, const Figures& f, const KineticFigures& k,
+                          const std::vector<std::string>& more_lines) {
+  // Every line in the screen's order, each with its rank.
+  std::vector<FigureLine> lines = heading_lines(f, k);
+  std::vector<FigureLine> table = table_lines(k), measured = measured_lines(k);
+  lines.insert(lines.end(), table.begin(), table.end());
+  lines.insert(lines.end(), measured.begin(), measured.end());
+  for (std::size_t i = 0; i < more_lines.size(); ++i)
+    lines.push_back({more_lines[i], 19 + static_cast<int>(i), "Lyapunov"});
+  // As many as the screen has room for, the histogram below them.
+  const Layout layout = lay_out(lines, screen.rows - 2);
+  std::vector<std::string> shown_lines;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (layout.kept[i]) shown_lines.push_back(lines[i].text);
+  draw_figures(screen, shown_lines);  // stage 6: the lines at their places
+  int row = 1 + static_cast<int>(shown_lines.size()) + (layout.gap ? 1 : 0);
+  if (layout.histogram_rows > 0) {
+    draw_histogram(screen, k, row, row + layout.histogram_rows - 1);
   }
-  return header;
+  if (!layout.left_out.empty()) write_text(screen, screen.rows - 2, layout.left_out);
 }
-
-std::string csv_row(const Figures& f, const KineticFigures& k) {
-  fmt::memory_buffer row;
-  for (const Column& column : columns) {
-    if (row.size() > 0) row.push_back(',');
-    fmt::format_to(std::back_inserter(row), "{:.17g}", column.value(f, k));
-  }
-  return fmt::to_string(row);
-}
-// [/anchor: csv-columns]
+// [/anchor: draw-kinetic-figures]
 
 }  // namespace gas

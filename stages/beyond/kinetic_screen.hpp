@@ -3,8 +3,8 @@
 //
 // What this file does: gathers the figures (stage 6's Figures of the gas now,
 // and kinetic theory's predictions and time averages), lays them out as the
-// lines of stage 6's character screen, draws the histogram below them, and
-// writes the same figures as a CSV row (--csv).
+// lines of stage 6's character screen, and draws the histogram below them.
+// The same figures as --csv's columns: beyond/kinetic_csv.hpp.
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas, the mean speed for example"). The theory is beyond
 // the article.
@@ -53,11 +53,24 @@ struct KineticFigures {
 KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
                                double energy);
 
-// The statistics screen: the figures at fixed places inside the border, each
-// beside its prediction, and under them the histogram of speeds with the
-// Maxwell-Boltzmann curve, as far as the screen has room. `more_lines`, from
-// other observers (the Lyapunov exponent, lesson 15), follow the figures as
-// far as they leave the histogram room (both of the exponent's from --rows 30 up).
+// The statistics screen: the figures at fixed places inside the border, and
+// under them the histogram of speeds with the Maxwell-Boltzmann curve.
+// `more_lines`, from other observers (the Lyapunov exponent, lesson 15),
+// follow the figures. Every row says what its columns hold: a row of the
+// table a measured average beside the theory of the same thing (with their
+// errors, and the theory's name); a second measurement gets its own label
+// within its line; a blank error says why (Average::why_no_error).
+//
+// A screen too short for all of it keeps the lines a student needs first —
+// the gas now (N, eta, kT, the drift, the momentum, the mean and rms speed:
+// stage 6's own figures), since when the averages run, the table's
+// header, the mean speed, the pressure, Z, the collision rate and the mean
+// free path, then the histogram (at least 4 rows of bars), then H, the
+// units, g(2a), Z's difference from the reference, the interior, the
+// contact theorem, the box and the Lyapunov exponent, in that order — and
+// its last row names what it left out and how many rows show it all. On a
+// screen with room for everything (from 30 rows of window: --rows 30) the
+// histogram takes every row the figures leave.
 void draw_kinetic_figures(TextScreen& screen, const Figures& figures,
                           const KineticFigures& kinetic,
                           const std::vector<std::string>& more_lines = {});
@@ -66,13 +79,8 @@ void draw_kinetic_figures(TextScreen& screen, const Figures& figures,
 void draw_histogram(TextScreen& screen, const KineticFigures& kinetic, int first_row,
                     int last_row);
 
-// The CSV header and one row of figures (--csv): the article's nine columns,
-// then kinetic theory's, each named once in a table of columns
-// (kinetic_screen.cpp; the convention in data/README.md: a bulk figure
-// plain, the whole box's `_box`, `_error` its error, `_theory` the theory of
-// the same thing, `_theory_error` the theory's own). A new block of columns
-// is a new stretch of rows at the table's end.
-std::string csv_header();
-std::string csv_row(const Figures& figures, const KineticFigures& kinetic);
+// The rows of the histogram's smallest drawing: a title, 4 rows of bars and
+// the axis.
+inline constexpr int histogram_least_rows = 6;
 
 }  // namespace gas

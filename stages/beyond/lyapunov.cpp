@@ -75,8 +75,7 @@ LyapunovFigures LyapunovExponent::measured(const Gas& /*gas*/) const {
   f.warming_up = interval_ == 0;
   f.samples = static_cast<long long>(blocking_.count());
   if (f.samples == 0) return f;
-  f.exponent = {blocking_.mean(), blocking_.error(), blocking_.status(),
-                blocking_.batch_error()};
+  f.exponent = average_with_error(blocking_);
   const double duration = static_cast<double>(f.samples) * interval_;
   f.collision_rate = static_cast<double>(last_collision_ - first_collision_) / duration;
   if (!(f.collision_rate > 0)) return f;

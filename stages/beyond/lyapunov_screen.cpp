@@ -23,10 +23,12 @@ PrecisionHorizons precision_horizons(const Gas& gas, const LyapunovFigures& f) {
 
 namespace {
 
-// "1.2345 +- 0.0012", the error left out while not known.
-std::string with_error(double value, double error) {
-  if (std::isnan(error)) return fmt::format("{:.5g}", value);
-  return fmt::format("{:.5g} +- {:.2g}", value, error);
+// "1.2345 +- 0.0012"; while the error is not known, the reason in its place
+// ("1.2345 +- not yet"), or the value alone.
+std::string with_error(double value, double error, const char* why_no_error) {
+  if (!std::isnan(error)) return fmt::format("{:.5g} +- {:.2g}", value, error);
+  if (why_no_error != nullptr) return fmt::format("{:.5g} +- {}", value, why_no_error);
+  return fmt::format("{:.5g}", value);
 }
 
 }  // namespace
@@ -37,11 +39,16 @@ std::vector<std::string> lyapunov_lines(const Gas& gas, const LyapunovFigures& f
     return {"Lyapunov exponent: warming up (the change turns to grow fastest)"};
   }
   const PrecisionHorizons h = precision_horizons(gas, f);
+  const char* const why = f.exponent.why_no_error;
   return {
-      fmt::format("Lyapunov /time  {}  /collision a ball  {}",
-                  with_error(f.exponent.value, f.exponent.error),
-                  with_error(f.per_collision_per_ball, f.per_collision_per_ball_error)),
-      fmt::format("  horizon to a/100 (collisions a ball): float {:.2g} double {:.2g} "
+      fmt::format("Lyapunov exponent: {} per unit time",
+                  with_error(f.exponent.value, f.exponent.error, why)),
+      // The collisions per ball count walls and pairs: (wall collisions +
+      // pair collisions) / N, each collision once (beyond/lyapunov.hpp).
+      fmt::format(
+          "  {} per collision per ball (walls and pairs)",
+          with_error(f.per_collision_per_ball, f.per_collision_per_ball_error, why)),
+      fmt::format("  horizon to a/100 (collisions per ball): float {:.2g} double {:.2g} "
                   "long double {:.2g}",
                   h.single, h.twice, h.extended)};
 }

@@ -3,9 +3,9 @@
 //
 // What this file does: lays out what beyond/lyapunov.hpp measures as two
 // lines of the statistics screen — the exponent per unit time and per
-// collision a ball, and the precision horizon it predicts for float, double
-// and long double — and as the last block of --csv's columns,
-// `lyapunov,lyapunov_error` (per unit model time).
+// collision per ball (walls' and pairs'), and the precision horizon it
+// predicts for float, double and long double — and as the last block of
+// --csv's columns, `lyapunov,lyapunov_error` (per unit model time).
 // Article: "Gas on the display", stage 6, the third screen ("print some
 // properties of the gas"); the exponent is beyond the article.
 // Lesson: lessons/15-chaos.md
@@ -23,7 +23,7 @@ namespace gas {
 // as the benchmark's "trusted" (data/reports/speed-against-error.md).
 inline constexpr double horizon_distance_radii = 0.01;
 
-// The precision horizon of each number type, in collisions a ball, for the
+// The precision horizon of each number type, in collisions per ball, for the
 // exponent measured (NaN while it is not known).
 struct PrecisionHorizons {
   double single = not_known;    // float

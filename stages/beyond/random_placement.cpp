@@ -9,9 +9,11 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "beyond/cell_layout.hpp"
+#include "beyond/overlap_cells.hpp"
 
 namespace gas {
 namespace {
@@ -155,7 +157,12 @@ void give_velocities(double speed, bool same_speed, std::size_t first,
 }  // namespace
 
 Gas place_random_balls(const SceneDescription& scene) {
-  Gas gas = scene.gas;
+  SceneDescription copy = scene;
+  return place_random_balls(std::move(copy));
+}
+
+Gas place_random_balls(SceneDescription&& scene) {
+  Gas gas = std::move(scene.gas);
   if (!scene.random) return gas;
   const RandomBalls& random = *scene.random;
 
@@ -187,11 +194,12 @@ Gas place_random_balls(const SceneDescription& scene) {
 }
 
 Gas parse_scene(std::string_view text, const std::string& file_name) {
-  return place_random_balls(parse_scene_description(text, file_name));
+  return place_random_balls(
+      parse_scene_description(text, file_name, first_overlap_by_cells));
 }
 
 Gas read_scene_file(const std::string& path) {
-  return place_random_balls(read_scene_description(path));
+  return place_random_balls(read_scene_description(path, first_overlap_by_cells));
 }
 
 }  // namespace gas

@@ -5,7 +5,9 @@
 // and of each other, each with a random direction and a speed between 0.5 and
 // 1.5 SPEED — and gives the reader the program uses for every scene:
 // parse_scene and read_scene_file, stage 2's reading and checks with the
-// random balls then placed.
+// random balls then placed, and overlaps looked for through cells
+// (beyond/overlap_cells.hpp), so that a scene of 10^6 balls reads in
+// seconds.
 // Article: "Gas on the display", stage 2, "input". The article types in every
 // ball; a scene of thousands placed at random is beyond it (lesson 10 runs
 // such gases).
@@ -37,10 +39,12 @@ inline constexpr double densest_packing = 0.9068996821171089;
 // A request for more balls than can be placed is refused as
 // "FILE:LINE: what is wrong" at the 'random' line.
 Gas place_random_balls(const SceneDescription& scene);
+// The same, the description's balls moved into the gas instead of copied.
+Gas place_random_balls(SceneDescription&& scene);
 
 // Parses scene text, a 'random' line included: stage 2's
-// parse_scene_description, then place_random_balls. `file_name` is used only
-// in messages.
+// parse_scene_description with first_overlap_by_cells, then
+// place_random_balls. `file_name` is used only in messages.
 Gas parse_scene(std::string_view text, const std::string& file_name);
 
 // Reads and parses the scene file at `path` the same way.

@@ -9,12 +9,14 @@
 #include <cstdlib>
 #include <optional>
 
+#include "beyond/density_picture.hpp"
 #include "beyond/display_steps.hpp"
 #include "beyond/kinetic_screen.hpp"
 #include "beyond/lyapunov_screen.hpp"
 #include "beyond/observer_list.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
+#include "beyond/velocity_autocorrelation.hpp"
 #include "program/key_source.hpp"
 #include "program/run_outputs.hpp"
 #include "program/scene_lookup.hpp"
@@ -110,6 +112,15 @@ Figures figures_of(const Control& control) {
 // columns each on an 80-column screen.
 constexpr int histogram_bins = 36;
 
+// The line of keys under the table (Display::keys_below), for keys typed
+// live: stage 7's keys, and A where the averages are shown; a short form
+// for a narrow window.
+std::vector<std::string> key_line_forms(bool averages) {
+  return {fmt::format("keys: S stop  R run  B reverse  > T0x2  < T0/2  0 redraw  E end{}",
+                      averages ? "  A new averages" : ""),
+          fmt::format("keys: S R B > < 0 E{} (gas --help)", averages ? " A" : "")};
+}
+
 // Does the run draw the table of balls (the picture's centres), or only
 // figures (--mode stats) or nothing (--mode none)?
 bool draws_table(const Options& options) {
@@ -122,11 +133,12 @@ class ConsoleRun {
   ConsoleRun(const Options& options, Gas gas)
       : options_(options),
         terminal_(is_terminal(1) && !options.trace && options.drawn),
+        in_place_(terminal_ && understands_escapes()),
         rule_(options.pictures.value_or(picture_rule_for(gas.balls.size()))),
         keyboard_(terminal_ && is_terminal(0) && !options.keys && !options.step),
         control_(start_control_for(std::move(gas), options.strategy)),
-        display_(stdout, terminal_, terminal_ && std::getenv("NO_COLOR") == nullptr),
-        grid_(grid_size(options, terminal_)),
+        display_(stdout, in_place_, in_place_ && std::getenv("NO_COLOR") == nullptr),
+        grid_(grid_size(options, in_place_)),
         frame_limit_(frame_limit(options, terminal_)),
         outputs_(options, display_),
         keeps_{draws_table(options), options.events_path.has_value() || options.bell},
@@ -152,11 +164,26 @@ class ConsoleRun {
       observers_.emplace(std::vector<CollisionObserver*>{&*statistics_, &*lyapunov_});
       control_.observer = &*observers_;
     }
+    // The velocity autocorrelation (--vacf, lesson 16) on the same hook, with
+    // the others if there are any; nothing of it without --vacf.
+    if (options.vacf_path) {
+      vacf_.emplace(control_.gas);
+      std::vector<CollisionObserver*> all;
+      if (statistics_) all.push_back(&*statistics_);
+      if (lyapunov_) all.push_back(&*lyapunov_);
+      all.push_back(&*vacf_);
+      observers_.emplace(all);
+      control_.observer =
+          all.size() == 1 ? &*vacf_ : static_cast<CollisionObserver*>(&*observers_);
+    }
     // Drawn in place: the frame fits the window, and fits it again when it
     // changes size (resize()).
-    if (const auto size = terminal_size(); terminal_ && size)
+    if (const auto size = terminal_size(); in_place_ && size)
       display_.fit_window(size->columns, size->rows);
-    if (terminal_) install_resize_flag();
+    if (in_place_) install_resize_flag();
+    choose_table_drawing();
+    // Keys typed live: the line under the table says which.
+    if (keyboard_) display_.keys_below(key_line_forms(options.mode == ScreenMode::stats));
   }
 
   // The article's stage 7: the keys of the tick; then, unless stopped, stages
@@ -175,17 +202,23 @@ class ConsoleRun {
       if (interrupted() || outputs_.failure()) break;
       if (frame_limit_ && frames_done >= *frame_limit_) break;
       if (options_.until && control_.gas.time >= *options_.until) break;
-      if (terminal_ && take_resize()) resize();  // stage 3 again, at the new size
+      if (in_place_ && take_resize()) resize();  // stage 3 again, at the new size
 
       // Stage 7: the keys of this tick; E ends the run.
       const std::string pressed = keys.take(control_.stopped);
       if (!press_all(pressed)) break;
       if (control_.stopped) {
-        // No step; on the keyboard, the status line shows what a key did.
-        if (keys.from_keyboard() && !pressed.empty()) show(figures_of(control_));
+        // No step. On a terminal the status line shows what a key did;
+        // printed whole, the ticks are counted, to be marked by one line.
+        if (keys.from_keyboard() || in_place_) {
+          if (!pressed.empty()) show(figures_of(control_));
+        } else {
+          ++stopped_ticks_;
+        }
         if (keys.wait_while_stopped()) continue;
         break;  // nothing could start the model again
       }
+      mark_stopped_ticks();
 
       // Stages 4 and 5 (and stage 7 going back to stage 4 at a collision), up
       // to the next picture: the first collision, or T + T0 (the rule).
@@ -211,8 +244,11 @@ class ConsoleRun {
       if (!keys.wait_after_step(step.length / control_.gas.display_step)) break;
     }
     // However the run ends: the terminal put back, the files closed whole.
+    mark_stopped_ticks();
     display_.finish();
-    outputs_.finish(control_.gas, statistics_ ? &*statistics_ : nullptr);
+    if (vacf_) vacf_->catch_up(control_.gas);  // the readings due by the end
+    outputs_.finish(control_.gas, statistics_ ? &*statistics_ : nullptr,
+                    vacf_ ? &*vacf_ : nullptr);
     return ending();
   }
 
@@ -234,6 +270,20 @@ class ConsoleRun {
                    ? std::string()
                    : fmt::format("; written whole: {}", fmt::join(files, ", ")));
     return 128 + interrupting_signal();
+  }
+
+  // Printed whole, a stretch of ticks in which the model stood stopped
+  // (keys of --keys or --step lines) is marked by one line: the status line
+  // of the gas as it stands, and how many ticks.
+  void mark_stopped_ticks() {
+    if (stopped_ticks_ == 0) return;
+    if (options_.drawn) {
+      display_.status_only(
+          fmt::format("{} [stopped {} tick{}]",
+                      status_line(figures_of(control_), options_.mode, false),
+                      stopped_ticks_, stopped_ticks_ == 1 ? "" : "s"));
+    }
+    stopped_ticks_ = 0;
   }
 
   // Where stage 2 read the scene: its file, or the default scene built in.
@@ -270,7 +320,18 @@ class ConsoleRun {
   // Back to stage 3: the screen laid out afresh, and drawn whole next time.
   void prepare_again() {
     screen_ = prepare();
+    choose_table_drawing();
     display_.invalidate();
+  }
+
+  // For the balls and trails screens, the images or, when a character cell
+  // holds more than one centre, the density in shades (beyond/density_picture.hpp),
+  // counted afresh on each screen stage 3 prepares.
+  void choose_table_drawing() {
+    density_.reset();
+    if (draws_table(options_) &&
+        table_drawing_for(control_.gas, screen_) == TableDrawing::shades)
+      density_.emplace(control_.gas, screen_);
   }
 
   // Stage 3: the table's screen, or for the figures a plain character screen.
@@ -286,24 +347,26 @@ class ConsoleRun {
   // article's picture freezes there while stage 4 computes the next one.
   void show(const Figures& figures, const KineticFigures* kinetic = nullptr,
             bool at_collision = false) {
-    if (grid_.too_small) {  // until the window grows: one line, no frame
-      display_.notice(fmt::format("window too small: at least {} x {}", smallest_columns,
-                                  smallest_rows + 2));
+    if (grid_.too_small) {  // until the window grows: a notice, no frame
+      display_.notice({"window", "too", "small:", "at", "least",
+                       fmt::format("{} x {}", smallest_columns, smallest_rows + 2)});
       return;
     }
-    const Tone& tone = tones[control_.tone];
+    const Tone& tone = density_ ? shades_tone : tones[control_.tone];
     if (options_.trace) {
-      fmt::print("stage 6  output: the {} screen{}\n", mode_name(options_.mode),
+      fmt::print("stage 6  output: the {} screen{}{}\n", mode_name(options_.mode),
+                 density_ ? fmt::format(" in shades ({:.4g} centres a character cell)",
+                                        density_->mean())
+                          : "",
                  at_collision ? fmt::format(", frozen at the collision T = TC = {}",
                                             control_.gas.time)
                               : "");
     }
     switch (options_.mode) {
       case ScreenMode::balls:
-        draw_balls(screen_, control_.picture, control_.gas.radius, tone);
-        break;
       case ScreenMode::trails:
-        draw_trails(screen_, control_.picture, tone);
+        draw_table(screen_, options_.mode, control_.picture, control_.gas.time,
+                   control_.gas.radius, tone, density_ ? &*density_ : nullptr);
         break;
       case ScreenMode::stats:
         draw_kinetic_figures(
@@ -313,12 +376,15 @@ class ConsoleRun {
             lyapunov_lines(control_.gas, lyapunov_->measured(control_.gas)));
         break;
     }
-    display_.show(screen_, status_line(figures, options_.mode, control_.stopped), tone);
+    // Colour for a table's glyphs; none on a screen of figures.
+    display_.show(screen_, status_line(figures, options_.mode, control_.stopped),
+                  options_.mode == ScreenMode::stats ? nullptr : &tone);
     if (options_.trace) trace_decision(control_, stdout);
   }
 
   const Options& options_;
-  bool terminal_;     // frames drawn in place on a terminal, not printed whole
+  bool terminal_;     // frames shown on a terminal, in real time and with no frame limit
+  bool in_place_;     // ... drawn in place with escapes (not a dumb terminal)
   PictureRule rule_;  // pictures at every collision, or at display steps only
   bool keyboard_;     // keys typed live on the keyboard
   Control control_;
@@ -327,10 +393,13 @@ class ConsoleRun {
   std::optional<long long> frame_limit_;
   RunOutputs outputs_;
   StepKeeps keeps_;  // what a display step keeps: the centres, the collisions
-  std::optional<GasStatistics> statistics_;   // for --mode stats, --csv, --structure
-  std::optional<LyapunovExponent> lyapunov_;  // with them (lesson 15)
-  std::optional<ObserverList> observers_;     // both on stage 7's hook
+  std::optional<GasStatistics> statistics_;      // for --mode stats, --csv, --structure
+  std::optional<LyapunovExponent> lyapunov_;     // with them (lesson 15)
+  std::optional<VelocityAutocorrelation> vacf_;  // for --vacf (lesson 16)
+  std::optional<ObserverList> observers_;        // all of them on stage 7's hook
+  long long stopped_ticks_ = 0;  // printed whole: ticks stopped, not yet marked
   TextScreen screen_;
+  std::optional<DensityPicture> density_;  // the table in shades, if so drawn
 };
 
 }  // namespace

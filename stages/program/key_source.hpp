@@ -1,10 +1,12 @@
 // Where the keys of each tick of the main loop come from.
 //
-// Serves stage 7 of the article, "model control": the article's program asks
-// the keyboard (INKEY$) on every pass of its loop. Ours has three sources of
-// keys — the keyboard, pressed without Enter; a script given with --keys, one
-// key per tick; and with --step, the line typed before each Enter — and the
-// loop asks this one object, whichever it is.
+// Serves stage 7 of the article, "model control": while the model runs, a
+// key pressed makes it do something (「押せば何らかの操作をさせられる」);
+// the article does not say how a key is read, and gives no program text
+// (lessons/README.md, glossary). Ours has three sources of keys — the
+// keyboard, pressed without Enter; a script given with --keys, one key per
+// tick; and with --step, the line typed before each Enter — and the loop
+// asks this one object, whichever it is.
 // Lesson: lessons/7-model-control.md ("Aside: the program around the loop")
 #pragma once
 

@@ -1,8 +1,10 @@
 // The command line of `gas`: what each option means and how it is read.
 //
-// Not one of the article's stages: the article's program asked nothing at the
-// start; these options choose the scene, how long to run, which keys to
-// press and which files to write, so that a run can be repeated exactly.
+// Not one of the article's stages: the article's stage 2 sets the initial
+// centres and velocities, and T0 (「過程の“刻み” T_0 も与えられる」), and
+// does not say how; ours reads them from a scene file. These options choose the
+// scene, how long to run, which keys to press and which files to write, so
+// that a run can be repeated exactly.
 // Lesson: lessons/7-model-control.md; the reference: README.md ("The program").
 #pragma once
 
@@ -45,6 +47,8 @@ struct Options {
   std::optional<PictureRule> pictures;     // --pictures; none: chosen by N
   // --structure FILE
   std::optional<std::string> structure_path;
+  // --vacf FILE
+  std::optional<std::string> vacf_path;
 };
 
 // Reads the arguments after the program's name. Throws UsageError.

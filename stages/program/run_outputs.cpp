@@ -69,21 +69,25 @@ void OutputFile::close() {
   if (std::fclose(file_.release()) != 0) fail();
 }
 
-std::optional<std::string> write_whole(const std::string& path, const std::string& text) {
+std::optional<std::string> write_whole(const std::string& path,
+                                       const PieceByPiece& pieces) {
   std::string temporary;
   const int descriptor = new_file_beside(path, temporary);
   if (descriptor < 0) return cannot_write(path);
   // All of it, and on the disk, before it takes the old file's name; each
-  // failure is described by the errno of the call that failed.
+  // failure is described by the errno of the call that failed (the pieces
+  // after a failure are not written).
   std::optional<std::string> failure;
-  for (std::size_t done = 0; !failure && done < text.size();) {
-    const ssize_t wrote = ::write(descriptor, text.data() + done, text.size() - done);
-    if (wrote > 0) {
-      done += static_cast<std::size_t>(wrote);
-    } else if (!(wrote < 0 && errno == EINTR)) {  // a signal: the flag is seen later
-      failure = cannot_write(path);
+  pieces([&](std::string_view piece) {
+    for (std::size_t done = 0; !failure && done < piece.size();) {
+      const ssize_t wrote = ::write(descriptor, piece.data() + done, piece.size() - done);
+      if (wrote > 0) {
+        done += static_cast<std::size_t>(wrote);
+      } else if (!(wrote < 0 && errno == EINTR)) {  // a signal: the flag is seen later
+        failure = cannot_write(path);
+      }
     }
-  }
+  });
   if (!failure && fsync(descriptor) != 0) failure = cannot_write(path);
   if (::close(descriptor) != 0 && !failure) failure = cannot_write(path);
   if (!failure && std::rename(temporary.c_str(), path.c_str()) != 0)
@@ -92,16 +96,21 @@ std::optional<std::string> write_whole(const std::string& path, const std::strin
   return failure;
 }
 
+std::optional<std::string> write_whole(const std::string& path, const std::string& text) {
+  return write_whole(path, [&](const auto& write) { write(text); });
+}
+
 RunOutputs::RunOutputs(const Options& options, Display& display)
     : events_(options.events_path),
       csv_(options.csv_path),
       dump_path_(options.dump_path),
       structure_path_(options.structure_path),
+      vacf_path_(options.vacf_path),
       bell_(options.bell),
       display_(display) {
-  // A dump and the structure are written at the end; whether they can be is
-  // asked now, so that a bad path fails before the run, not after it.
-  for (const auto* path : {&dump_path_, &structure_path_}) {
+  // A dump, the structure and the VACF are written at the end; whether they
+  // can be is asked now, so that a bad path fails before the run, not after it.
+  for (const auto* path : {&dump_path_, &structure_path_, &vacf_path_}) {
     if (!*path) continue;
     std::string probe;
     const int descriptor = new_file_beside(**path, probe);
@@ -155,21 +164,27 @@ void RunOutputs::write_csv(const Figures& figures, const KineticFigures& kinetic
   csv_.write(csv_row(figures, kinetic) + more + "\n");
 }
 
-void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics) {
+void RunOutputs::finish(const Gas& gas, const GasStatistics* statistics,
+                        const VelocityAutocorrelation* vacf) {
   write_event_lines();
   events_.close();
   csv_.close();
-  if (dump_path_) dump_failure_ = write_whole(*dump_path_, scene_text(gas));
+  if (dump_path_) {
+    dump_failure_ = write_whole(*dump_path_,
+                                [&](const auto& write) { write_scene_text(gas, write); });
+  }
   if (structure_path_ && statistics)
     structure_failure_ =
         write_whole(*structure_path_, structure_csv(statistics->structure()));
+  if (vacf_path_ && vacf) vacf_failure_ = write_whole(*vacf_path_, vacf_csv(*vacf));
 }
 
 std::optional<std::string> RunOutputs::failure() const {
   if (events_.failure()) return events_.failure();
   if (csv_.failure()) return csv_.failure();
   if (dump_failure_) return dump_failure_;
-  return structure_failure_;
+  if (structure_failure_) return structure_failure_;
+  return vacf_failure_;
 }
 
 std::vector<std::string> RunOutputs::written() const {
@@ -178,6 +193,7 @@ std::vector<std::string> RunOutputs::written() const {
     if (*file) files.push_back(file->path());
   if (dump_path_) files.push_back(*dump_path_);
   if (structure_path_) files.push_back(*structure_path_);
+  if (vacf_path_) files.push_back(*vacf_path_);
   return files;
 }
 

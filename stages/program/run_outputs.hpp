@@ -1,5 +1,5 @@
 // What a run leaves behind besides its frames: the --events and --csv files,
-// the --dump and --structure at the end, and the --bell on collisions.
+// the --dump, --structure and --vacf at the end, and the --bell on collisions.
 //
 // Beyond the article: its program only drew (stage 6) and sounded a note at
 // each collision (stage 7's "sound"); these outputs let a run be studied
@@ -10,13 +10,15 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "beyond/kinetic_screen.hpp"
+#include "beyond/kinetic_csv.hpp"
+#include "beyond/velocity_autocorrelation.hpp"
 #include "program/options.hpp"
 #include "stage1_data.hpp"
 #include "stage6_output.hpp"
@@ -61,9 +63,19 @@ class OutputFile {
   std::optional<std::string> failure_;
 };
 
-// Writes `text` to `path` whole or not at all: into a new file beside it,
-// which is then renamed over `path`, so that a run that dies while writing
-// never leaves half a scene. Returns "FILE: what went wrong" on failure.
+// A text made a piece at a time, each piece handed to `write` as it is made
+// (stage 2's write_scene_text is one).
+using PieceByPiece =
+    std::function<void(const std::function<void(std::string_view piece)>& write)>;
+
+// Writes the text `pieces` makes to `path` whole or not at all: into a new
+// file beside it, each piece as it comes (so a --dump of 10^6 balls never
+// holds its 96 MB of text), then renamed over `path`, so that a run that
+// dies while writing never leaves half a scene. Returns "FILE: what went
+// wrong" on failure.
+std::optional<std::string> write_whole(const std::string& path,
+                                       const PieceByPiece& pieces);
+// The same for a text made already.
 std::optional<std::string> write_whole(const std::string& path, const std::string& text);
 
 // The outputs the options ask for, from the start of a run to its end.
@@ -90,8 +102,10 @@ class RunOutputs {
   // At the end of the run, however it ends: --events and --csv closed on a
   // whole line, and --dump written whole, the gas at its time T (every
   // collision up to T is in --events); --structure written whole from the
-  // statistics (which a run that asks for it has).
-  void finish(const Gas& gas, const GasStatistics* statistics);
+  // statistics (which a run that asks for it has); --vacf written whole from
+  // the velocity autocorrelation (likewise).
+  void finish(const Gas& gas, const GasStatistics* statistics,
+              const VelocityAutocorrelation* vacf = nullptr);
 
   // The first output that could not be written, "FILE: why", if any.
   std::optional<std::string> failure() const;
@@ -112,6 +126,8 @@ class RunOutputs {
   std::optional<std::string> dump_failure_;            // why --dump was not written
   std::optional<std::string> structure_path_;          // --structure
   std::optional<std::string> structure_failure_;       // why it was not written
+  std::optional<std::string> vacf_path_;               // --vacf
+  std::optional<std::string> vacf_failure_;            // why it was not written
   bool bell_ = false;                                  // --bell
   Display& display_;                                   // where the bell rings
   std::chrono::steady_clock::time_point last_bell_{};  // when it last rang

@@ -1,11 +1,12 @@
 // Scenes by name: `gas crowd` or `gas crowd.scene` from any folder.
 //
-// Not one of the article's stages: the article's program had its scene typed
-// in; this program reads a scene file, and finds a scene named on the command
-// line that is not a file among the teaching scenes: those installed beside
-// the program (share/gas-on-the-display, found from the program's own
-// location, so that a `--prefix` install and a relocated package both work),
-// or, for a program run from its build folder, the source tree's data/.
+// Not one of the article's stages: the article's stage 2 sets the initial
+// values and does not say how; this program reads a scene file, and finds a
+// scene named on the command line that is not a file among the teaching scenes:
+// those installed beside the program (share/gas-on-the-display, found from the
+// program's own location, so that a `--prefix` install and a relocated package
+// both work), or, for a program run from its build folder, the source tree's
+// data/.
 // Lesson: lessons/2-input.md; the reference: README.md ("The program").
 #pragma once
 

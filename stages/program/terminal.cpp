@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cstdlib>
+#include <string_view>
 
 namespace gas {
 namespace {
@@ -35,6 +37,11 @@ extern "C" void on_resize(int) {
 
 bool is_terminal(int file_descriptor) {
   return isatty(file_descriptor) == 1;
+}
+
+bool understands_escapes() {
+  const char* const term = std::getenv("TERM");
+  return term != nullptr && *term != '\0' && std::string_view(term) != "dumb";
 }
 
 std::optional<TerminalSize> terminal_size() {

@@ -1,8 +1,10 @@
 // The terminal: keys without Enter, its size, and putting it back as it was.
 //
-// Not one of the article's stages: the article's BASIC had INKEY$ for a key
-// and a screen of fixed size; this file gives stage 7's console loop the same
-// two things on a POSIX terminal.
+// Not one of the article's stages: the article leaves the program's language
+// and machine to the reader (「適当な言語で」, lessons/README.md, glossary) and
+// asks for keys that act while the model runs (stage 7) and a screen of
+// points (stage 3); this file gives stage 7's console loop keys without Enter
+// and a screen of characters of known size on a POSIX terminal.
 // Lesson: lessons/7-model-control.md (the keys).
 #pragma once
 
@@ -12,6 +14,12 @@
 namespace gas {
 
 bool is_terminal(int file_descriptor);
+
+// Does the terminal understand ANSI escapes (cursor moves, colours)? Not
+// when the environment's TERM is unset, empty or "dumb" (a terminal that
+// can only print lines, such as Emacs' shell): frames are then printed
+// whole, with no escape byte.
+bool understands_escapes();
 
 // The terminal's size in characters, if standard output is a terminal.
 struct TerminalSize {

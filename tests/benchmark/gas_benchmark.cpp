@@ -19,6 +19,8 @@
 //   6. Beside the best peer: build/gas and Graphical-EDMD as processes on
 //      the same gases, 10^3 to 10^5 balls, and build/gas alone at 10^6
 //      (peer_runs.hpp); "not run" for the peer without --peer.
+//   7. Checkpoints: a --dump of 10^3 to 10^6 balls written and read back,
+//      timed as processes (dump_runs.hpp).
 //
 // and two pictures beside it, drawn by gnuplot if it is installed
 // (plots.hpp): collisions per second against N, and the distance from the
@@ -57,6 +59,7 @@
 #include "benchmark_build_info.hpp"
 #include "beyond/random_placement.hpp"
 #include "beyond/strategy.hpp"
+#include "dump_runs.hpp"
 #include "engine.hpp"
 #include "lyapunov_horizon.hpp"
 #include "peer_runs.hpp"
@@ -968,6 +971,10 @@ int run(const Settings& settings) {
   gas::benchmark::write_peer_csv(settings.out / "peer.csv", peer_runs);
   fs::remove_all(peer_settings.scratch);
 
+  // ---- 7. checkpoints: a dump written and read back
+  const std::string dumps =
+      gas::benchmark::dump_report(settings.smoke, settings.out, sizes.program_time_limit);
+
   // ---- the pictures
   progress("pictures: gnuplot");
   const std::string throughput_picture = gas::benchmark::picture_markdown(
@@ -1324,6 +1331,9 @@ int run(const Settings& settings) {
 
   // 6.
   add(gas::benchmark::peer_section(peer_settings, peer_runs));
+
+  // 7.
+  add(dumps);
 
   {
     std::ofstream file(settings.out / "speed-against-error.md");

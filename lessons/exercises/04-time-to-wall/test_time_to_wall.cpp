@@ -50,9 +50,11 @@ constexpr double careful = 1e-13;
 
 // Limits of any size and place: low anywhere from -1000 to 1000, the room
 // from 0.01 to 10000 wide.
-std::pair<double, double> limits(Draw& draw) {
-  const double low = draw.uniform(-1000, 1000);
-  return {low, low + draw.magnitude(-2, 4)};
+double draw_low(Draw& draw) {
+  return draw.uniform(-1000, 1000);
+}
+double draw_high(Draw& draw, double low) {
+  return low + draw.magnitude(-2, 4);
 }
 
 }  // namespace
@@ -103,7 +105,8 @@ TEST_SUITE("exercise-04") {
     INFO("at rest along this axis (velocity +0 or -0) the answer is gas::never");
     Draw draw(402);
     for (int n = 1; n <= 300; ++n) {
-      const auto [low, high] = limits(draw);
+      const double low = draw_low(draw);
+      const double high = draw_high(draw, low);
       // Inside, on either limit, or beyond either.
       const double places[] = {draw.uniform(low, high), low, high,
                                low - draw.uniform(0, 1), high + draw.uniform(0, 1)};
@@ -120,7 +123,8 @@ TEST_SUITE("exercise-04") {
         "velocity");
     Draw draw(403);
     for (int n = 1; n <= 500; ++n) {
-      const auto [low, high] = limits(draw);
+      const double low = draw_low(draw);
+      const double high = draw_high(draw, low);
       const double position = draw.uniform(low, high);
       const double velocity = (draw.coin() ? 1 : -1) * draw.magnitude(-3, 3);
       CAPTURE(n);
@@ -133,7 +137,8 @@ TEST_SUITE("exercise-04") {
     INFO("beyond the limit it moves towards: 0 (now); beyond the other: the far limit");
     Draw draw(404);
     for (int n = 1; n <= 200; ++n) {
-      const auto [low, high] = limits(draw);
+      const double low = draw_low(draw);
+      const double high = draw_high(draw, low);
       const bool above = draw.coin();
       const double hair = (high - low) * draw.magnitude(-12, -1);
       const double position = above ? high + hair : low - hair;

@@ -14,7 +14,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <tuple>
 #include <utility>
 
 #include "exercise_test.hpp"
@@ -49,22 +48,23 @@ Hit collide(const Ball& p, const Ball& q) {
   return hit;
 }
 
-// Checks that x, y and since of both balls are as they were, to the bit:
+// Checks that x, y and since of one ball are as they were, to the bit:
 // collide_balls changes velocities only.
+bool same_place(const Hit& hit, const char* name, const Ball& before, const Ball& after) {
+  const std::string what = fmt::format("{}\n  {}'s ", hit.text(), name);
+  return CHECK_NUMBER(what + "x changed: only the velocities change", after.x, before.x,
+                      0) &&
+         CHECK_NUMBER(what + "y changed: only the velocities change", after.y, before.y,
+                      0) &&
+         CHECK_NUMBER(what + "since changed: only the velocities change", after.since,
+                      before.since, 0);
+}
+
+// The same for both balls.
 bool same_places(const Hit& hit) {
-  bool same = true;
-  for (const auto& [name, before, after] :
-       {std::tuple{"p", hit.p, hit.p_new}, std::tuple{"q", hit.q, hit.q_new}}) {
-    const std::string what = fmt::format("{}\n  {}'s ", hit.text(), name);
-    same = CHECK_NUMBER(what + "x changed: only the velocities change", after.x, before.x,
-                        0) &&
-           CHECK_NUMBER(what + "y changed: only the velocities change", after.y, before.y,
-                        0) &&
-           CHECK_NUMBER(what + "since changed: only the velocities change", after.since,
-                        before.since, 0) &&
-           same;
-  }
-  return same;
+  const bool p_same = same_place(hit, "p", hit.p, hit.p_new);
+  const bool q_same = same_place(hit, "q", hit.q, hit.q_new);
+  return p_same && q_same;
 }
 
 // The velocities as they must be: VI = (d.w) / (d.d), worked out in long

@@ -97,8 +97,8 @@ TEST_SUITE("exercise-10") {
     CHECK(effect(control, 'B') == none);
     CHECK(control.gas.balls[0].vx == -vx);
     INFO(
-        "the article's B: reverse, change the tone, and go on computing: stopped no "
-        "more");
+        "B reverses, changes the tone and goes on computing: a stopped model runs again "
+        "(our reading of the article)");
     CHECK_FALSE(control.stopped);
   }
 
