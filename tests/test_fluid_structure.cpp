@@ -286,8 +286,13 @@ TEST_SUITE("kinetic-theory") {
           doctest::Approx(gas::hard_disc_fluid_contact_value(r.csv.at("eta_interior"))));
     check_agree(r.csv, "g_contact", "g_contact_theory", false);
     // The contact theorem: kT n(contact) at the walls' middles is the push
-    // on them, three combined errors.
-    check_agree(r.csv, "wall_contact_pressure", "pressure", true);
+    // on them, within three errors of the contact figure. The push's own
+    // error waits for batches as long as the table's heat time (rule 2 of
+    // blocking.hpp: some 500 time units here, far beyond this run); it
+    // counts every bounce and was some 4 times smaller than the contact
+    // figure's, which counts a strip's few centres per snapshot.
+    CHECK(std::isnan(r.csv.at("pressure_error")));
+    check_agree(r.csv, "wall_contact_pressure", "pressure", false);
     // Beyond d = 7 (centres 8 radii from the wall) the strips are inside the
     // interior: their density is the interior's, eta_int / (pi a^2), from
     // the time the balls spend there. The strips' errors move together (a

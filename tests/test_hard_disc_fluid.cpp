@@ -9,7 +9,8 @@
 // - Its values at the top of the fluid range against simulation data (Engel
 //   et al. 2013, Li et al. 2022), within the 0.1 % it is meant for.
 // - Henderson's error against it: the figures issue 14 quotes.
-// - The contact value from the 2D virial theorem and the slope dZ/deta.
+// - The contact value from the 2D virial theorem, the slope dZ/deta and the
+//   curvature d^2Z/deta^2.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -195,6 +196,22 @@ TEST_SUITE("kinetic-theory") {
             doctest::Approx(difference).epsilon(1e-7));
     }
     CHECK(gas::hard_disc_fluid_compressibility_slope(0) == doctest::Approx(2));
+    // The curvature Z'' (the closed box's shift needs it) against a central
+    // difference of the slope (step 1e-5: h^2 Z'''' / 6 and rounding, some
+    // 1e-12 / 1e-5 of Z', are below 1e-7 of Z''), and at 0 the series'
+    // 2 b3 (Z = 1 + 2 eta + b3 eta^2 + ...).
+    for (double eta : {0.05, 0.3, 0.5, 0.69}) {
+      const double h = 1e-5;
+      const double difference = (gas::hard_disc_fluid_compressibility_slope(eta + h) -
+                                 gas::hard_disc_fluid_compressibility_slope(eta - h)) /
+                                (2 * h);
+      CAPTURE(eta);
+      CHECK(gas::hard_disc_fluid_compressibility_curvature(eta) ==
+            doctest::Approx(difference).epsilon(1e-7));
+    }
+    CHECK(gas::hard_disc_fluid_compressibility_curvature(0) ==
+          doctest::Approx(2 * b3_exact).epsilon(1e-8));
+    CHECK(std::isnan(gas::hard_disc_fluid_compressibility_curvature(0.75)));
     // The contact value's slope (g_contact_theory_error = |slope| x eta's
     // error) against a central difference of g, as above; at 0 the limit b3 / 2.
     for (double eta : {0.05, 0.3, 0.5, 0.69}) {

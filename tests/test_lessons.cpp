@@ -13,6 +13,13 @@
 //   <!-- unchecked: WHY -->              followed by a ```cpp or ```text block
 //                                        that nothing can check (a sketch, an
 //                                        example of a format), and WHY not
+//   <!-- report: data/reports/FILE NAME --> followed by lines up to the next
+//                                        blank one (a Markdown table, say): the
+//                                        lines after '<!-- section: NAME -->'
+//                                        in FILE up to its next blank line. A
+//                                        report is written by the command it
+//                                        names (figures that take minutes to
+//                                        make), so a lesson's figures follow it
 //
 // A lesson is every .md file under lessons/, the exercises' instructions
 // included. Every ```cpp and every ```text block of a lesson has one of these
@@ -187,10 +194,10 @@ std::vector<std::string> lesson_files() {
 
 // A quoted block of a lesson: its marker, and where its content lies.
 struct Quote {
-  enum class Kind { code, output } kind = Kind::code;
+  enum class Kind { code, output, report } kind = Kind::code;
   int marker_line = 0;    // 1-based line of the <!-- ... --> marker
-  std::string file;       // code: the file named
-  std::string anchor;     // code: the anchor named
+  std::string file;       // code, report: the file named
+  std::string anchor;     // code: the anchor named; report: the section named
   std::string arguments;  // output: ARGS as written
   std::size_t first = 0;  // index of the first content line
   std::size_t end = 0;    // index of the closing fence
@@ -215,6 +222,7 @@ std::vector<std::string> split_on_spaces(const std::string& text) {
 const std::regex code_marker(R"(^<!-- code: (\S+) (\S+) -->$)");
 const std::regex output_marker(R"(^<!-- output:(.*)-->$)");
 const std::regex unchecked_note(R"(^<!-- unchecked: \S.*\S -->$)");
+const std::regex report_marker(R"(^<!-- report: (data/reports/\S+) (\S+) -->$)");
 
 // Finds the quoted blocks of a lesson. Markers are looked for only outside
 // fenced blocks, so a lesson can show the syntax inside a fence.
@@ -245,11 +253,32 @@ std::vector<Quote> find_quotes(const std::vector<std::string>& lines) {
       if (!quote.arguments.empty() && quote.arguments.back() == ' ')
         quote.arguments.pop_back();
       fence = "```text";
-    } else if (line.rfind("<!-- code:", 0) == 0 || line.rfind("<!-- output:", 0) == 0) {
+    } else if (std::regex_match(line, match, report_marker)) {
+      // A report's lines: up to the next blank line, no fence.
+      quote.kind = Quote::Kind::report;
+      quote.file = match[1];
+      quote.anchor = match[2];
+      quote.marker_line = static_cast<int>(i) + 1;
+      std::size_t end = i + 1;
+      while (end < lines.size() && !lines[end].empty()) ++end;
+      if (end == i + 1) {
+        quote.fault = "a report marker must be followed at once by the quoted lines";
+        quotes.push_back(quote);
+        continue;
+      }
+      quote.first = i + 1;
+      quote.end = end;
+      for (std::size_t k = quote.first; k < end; ++k) quote.content += lines[k] + "\n";
+      quotes.push_back(quote);
+      i = end - 1;
+      continue;
+    } else if (line.rfind("<!-- code:", 0) == 0 || line.rfind("<!-- output:", 0) == 0 ||
+               line.rfind("<!-- report:", 0) == 0) {
       quote.marker_line = static_cast<int>(i) + 1;
       quote.fault =
-          "a malformed marker: write '<!-- code: stages/FILE NAME -->' or "
-          "'<!-- output: ARGS -->' alone on its line";
+          "a malformed marker: write '<!-- code: stages/FILE NAME -->', "
+          "'<!-- output: ARGS -->' or '<!-- report: data/reports/FILE NAME -->' alone "
+          "on its line";
       quotes.push_back(quote);
       continue;
     } else {
@@ -396,6 +425,28 @@ Expected expected_output(const Quote& quote) {
   return expected;
 }
 
+// A report's section: the lines after "<!-- section: NAME -->" in the
+// report up to its next blank line.
+Expected expected_report(const Quote& quote) {
+  Expected expected;
+  expected.what = fmt::format("section '{}' of {}", quote.anchor, quote.file);
+  if (!fs::is_regular_file(source_path(quote.file))) {
+    expected.why_not = fmt::format("{} does not exist", quote.file);
+    return expected;
+  }
+  const std::vector<std::string> lines = lines_of(read_file(source_path(quote.file)));
+  const std::string opening = fmt::format("<!-- section: {} -->", quote.anchor);
+  const auto found = std::find(lines.begin(), lines.end(), opening);
+  if (found == lines.end()) {
+    expected.why_not = fmt::format("{} has no line '{}'", quote.file, opening);
+    return expected;
+  }
+  std::string text;
+  for (auto it = found + 1; it != lines.end() && !it->empty(); ++it) text += *it + "\n";
+  expected.text = text;
+  return expected;
+}
+
 bool updating() {
   const char* update = std::getenv("GAS_UPDATE_GOLDEN");
   return update != nullptr && std::string(update) == "1";
@@ -418,9 +469,10 @@ std::vector<std::string> check_lesson(const std::string& lesson, AnchorCache& ca
       problems.push_back(fmt::format("{}: {}", where, quote.fault));
       continue;
     }
-    const Expected expected = quote.kind == Quote::Kind::code
-                                  ? expected_code(quote, cache)
-                                  : expected_output(quote);
+    const Expected expected =
+        quote.kind == Quote::Kind::code     ? expected_code(quote, cache)
+        : quote.kind == Quote::Kind::report ? expected_report(quote)
+                                            : expected_output(quote);
     if (!expected.text) {
       problems.push_back(fmt::format("{}: {}", where, expected.why_not));
       continue;
@@ -691,6 +743,36 @@ TEST_SUITE("lessons") {
           "block line 1: the lesson has 'int x = 1;', the real text has 'int x = 2;'");
     CHECK(split_on_spaces(" --keys  S>>R.B --until 80 ") ==
           std::vector<std::string>{"--keys", "S>>R.B", "--until", "80"});
+  }
+
+  TEST_CASE("lessons: a report's figures are read up to the blank line, and checked") {
+    // This test proves that the quoted reports can fail: a made-up lesson
+    // quoting a section of data/reports/kinetic-seeds.md, its table's last
+    // line changed, and a report marker with nothing after it.
+    const std::string lesson =
+        "Prose.\n<!-- report: data/reports/kinetic-seeds.md closed -->\n| a | b |\n"
+        "|---|---|\n| 1 | 2 |\n\nMore prose.\n<!-- report: data/reports/none.md x -->\n\n"
+        "<!-- report: reports/kinetic-seeds.md closed -->\n";
+    const std::vector<Quote> quotes = find_quotes(lines_of(lesson));
+    REQUIRE(quotes.size() == 3);
+    CHECK(quotes[0].kind == Quote::Kind::report);
+    CHECK(quotes[0].file == "data/reports/kinetic-seeds.md");
+    CHECK(quotes[0].anchor == "closed");
+    CHECK(quotes[0].content == "| a | b |\n|---|---|\n| 1 | 2 |\n");
+    CHECK(quotes[1].fault.find("followed at once by the quoted lines") !=
+          std::string::npos);
+    CHECK(quotes[2].fault.find("a malformed marker") != std::string::npos);
+    // The real section is a table that the made-up one is not.
+    const Expected expected = expected_report(quotes[0]);
+    REQUIRE(expected.text);
+    CHECK(expected.text->rfind("| η |", 0) == 0);
+    // Up to the section's blank line, not beyond: table lines only.
+    for (const std::string& line : lines_of(*expected.text))
+      CHECK(line.rfind("|", 0) == 0);
+    CHECK(*expected.text != quotes[0].content);
+    Quote missing = quotes[0];
+    missing.anchor = "no-such-section";
+    CHECK(expected_report(missing).why_not.find("has no line") != std::string::npos);
   }
 
   TEST_CASE("lessons: the block rule finds a cpp or text block that nothing checks") {

@@ -1,6 +1,7 @@
 // Blocking analysis (beyond the article). See beyond/blocking.hpp for the
 // method (Flyvbjerg and Petersen 1989), the rule (batch means, Schmeiser
-// 1982) and its check (Jonsson 2018).
+// 1982; batches no shorter than the caller says) and its check (Jonsson
+// 2018).
 #include "beyond/blocking.hpp"
 
 #include <cmath>
@@ -10,8 +11,8 @@ namespace gas {
 
 namespace {
 constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
-// The standard normal 99.9 % quantile: Jonsson's test at that level.
-constexpr double test_quantile_z = 3.090232;
+// The standard normal 99 % quantile: Jonsson's test at that level.
+constexpr double test_quantile_z = 2.326348;
 }  // namespace
 
 double chi_squared_quantile(double degrees, double z) {
@@ -82,11 +83,13 @@ double BlockingAnalysis::naive_error() const {
   return count_ < 2 ? unknown : level_error(levels_[0]);
 }
 
-double BlockingAnalysis::jonsson_m(std::size_t k, std::size_t* terms) const {
+double BlockingAnalysis::jonsson_m(std::size_t first, std::size_t last,
+                                   std::size_t* terms) const {
   if (terms != nullptr) *terms = 0;
-  if (k >= levels_.size() || levels_[k].blocks < 2) return unknown;
+  if (first >= levels_.size() || levels_[first].blocks < 2) return unknown;
   double m = 0;
-  for (std::size_t i = k; i < levels_.size() && levels_[i].blocks >= 2; ++i) {
+  for (std::size_t i = first; i <= last && i < levels_.size() && levels_[i].blocks >= 2;
+       ++i) {
     const Level& level = levels_[i];
     const double n = static_cast<double>(level.blocks);
     const double sigma2 = level.squares / n;
@@ -98,20 +101,39 @@ double BlockingAnalysis::jonsson_m(std::size_t k, std::size_t* terms) const {
   return m;
 }
 
-int BlockingAnalysis::chosen_level() const {
-  // Batch means: the highest level with at least fewest_blocks blocks
-  // (levels only get fewer blocks going up).
+int BlockingAnalysis::batch_level() const {
+  // The highest level with at least fewest_blocks blocks (levels only get
+  // fewer blocks going up).
   std::size_t top = 0;
-  while (top < levels_.size() && levels_[top].blocks >= fewest_blocks) ++top;
-  if (top == 0) return -1;
-  const std::size_t k = top - 1;
-  // Jonsson's test from the level below the batches up (16 to 31 blocks,
-  // enough to see a correlation the batches still carry): are they
-  // uncorrelated?
+  while (top < levels_.size() && levels_[top].blocks >= fewest_blocks_) ++top;
+  return static_cast<int>(top) - 1;
+}
+
+// [anchor: error-rule]
+ErrorStatus BlockingAnalysis::status() const {
+  // 1. Batch means: fewest_blocks_ (16) to twice as many less one batches.
+  const int batches = batch_level();
+  if (batches < 0) return ErrorStatus::few_samples;
+  const auto k = static_cast<std::size_t>(batches);
+  // 2. Each batch at least shortest_batch_ samples.
+  if ((std::size_t{1} << k) < shortest_batch_) return ErrorStatus::short_batches;
+  // 3. Jonsson's test on the batches' level and the two below it.
   std::size_t terms = 0;
-  const double m = jonsson_m(k > 0 ? k - 1 : 0, &terms);
-  if (!(m < chi_squared_quantile(static_cast<double>(terms), test_quantile_z))) return -1;
-  return static_cast<int>(k);
+  const double m =
+      jonsson_m(k >= test_levels_below ? k - test_levels_below : 0, k, &terms);
+  if (!(m < chi_squared_quantile(static_cast<double>(terms), test_quantile_z)))
+    return ErrorStatus::correlated_batches;
+  return ErrorStatus::known;
+}
+// [/anchor: error-rule]
+
+int BlockingAnalysis::chosen_level() const {
+  return status() == ErrorStatus::known ? batch_level() : -1;
+}
+
+double BlockingAnalysis::batch_error() const {
+  const int k = batch_level();
+  return k < 0 ? unknown : level_error(levels_[static_cast<std::size_t>(k)]);
 }
 
 double BlockingAnalysis::error() const {

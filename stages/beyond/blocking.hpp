@@ -28,44 +28,52 @@
 // with its own statistical uncertainty d_k = e_k / sqrt(2 (n_k - 1)).
 // 1. Batch means with a fixed number of batches (B. Schmeiser, "Batch size
 //    effects in the analysis of simulation output", Oper. Res. 30, 556
-//    (1982)): the error is e_k of the highest level with at least
-//    `fewest_blocks` = 8 blocks, so 8 to 15 batches, each 1/8 to 1/15 of the
-//    run. As the run grows the batches grow with it, their correlation dies
-//    away whatever its time, and (mean - truth) / e_k tends to Student's t
-//    with n_k - 1 degrees of freedom (root mean square 1.08 to 1.18; beyond
-//    3 errors 1 % to 2 % of the time against 0.3 % for a normal). Fewer
-//    batches would be noisier; more would be shorter, and the slow modes of
-//    a gas (heat diffusing across the table: hundreds of time units at
-//    N = 1024) leave too-short batches correlated and their error too small.
-// 2. Known only once the batches are seen to be uncorrelated: M. Jonsson's
-//    test ("Standard error estimation by an automated blocking method",
-//    Phys. Rev. E 98, 043304 (2018), Eq. (12) and its theorem). With
-//    sigma_i^2 = (n_i - 1) s_i^2 / n_i and the lag-one autocovariance
-//    gamma_i = (1/n_i) sum_t (y_t - mean)(y_{t+1} - mean) of level i's block
-//    means y,
-//      M_j = sum over levels i >= j with n_i >= 2 of
-//            n_i ((n_i - 1) sigma_i^2 / n_i^2 + gamma_i)^2 / sigma_i^4,
-//    which for uncorrelated block means is chi-squared with as many degrees
-//    of freedom as it has terms. It is taken from the level below the
-//    batches (16 to 31 blocks) up: the batches' own level and those above
-//    it have too few blocks to see anything (a straight ramp passes them).
-//    The error is NaN while M_j exceeds the 99.9 % quantile (a false alarm
-//    one time in a thousand; Jonsson picks a level at 99 %, where a false
-//    alarm only moves one level up, but here it blanks an error). It catches
-//    a ramp, and AR(1) with phi = 0.99 (tau = 100) at 1000 samples (batches
-//    of 64) two times in three, never at 10^5. Jonsson's own rule, the
-//    lowest level that passes at 99 %, is not used for the error itself: it
-//    stops too early on the gas's slow modes (measured: errors of the bulk Z
-//    1.6 times too small at N = 1024, T = 800), where batch means hold (1.1).
-//    (The test was checked against two implementations that cite Eq. (12),
-//    Rimu.jl's and the paper's own code at github.com/computative/block,
-//    which compares M_j with the quantile of j + 1 degrees of freedom, not
-//    of its number of terms as the theorem says; we follow the theorem. We
-//    did not have the paper's full text.)
-// So for independent samples the error is known from 8 samples on. The rule
-// was chosen on build/gas's own samples (24 lattice runs at eta = 0.5, every
-// quantity's error against the scatter of its mean over the runs) and is
-// checked on AR(1) series with phi > 0 and < 0 in tests/test_blocking.cpp.
+//    (1982): the cost of few batches is small from eight to ten on, and
+//    more than 30 gain little): the error is e_k of the highest level with
+//    at least `fewest_blocks` = 16 blocks, so 16 to 31 batches, each 1/16
+//    to 1/31 of the run. As the run grows the batches grow with it and
+//    (mean - truth) / e_k tends to Student's t with n_k - 1 degrees of
+//    freedom: root mean square 1.04 to 1.07 (with 8 to 15 batches it would
+//    be 1.08 to 1.18, and its scatter over 40 runs twice as wide), beyond 3
+//    errors 0.5 % to 0.9 % of the time.
+// 2. Not before the batches are `shortest_batch` samples long (set by the
+//    caller from what it knows of its samples; 1 unless set). A figure of a
+//    gas in a box wanders with the box's slowest motions, heat flowing
+//    between the middle of the table and its edges, whose correlation is
+//    too faint to see in the run itself (lesson 14): the
+//    statistics set it from the table's heat time (beyond/gas_statistics).
+// 3. Known only once the batches look uncorrelated: M. Jonsson's test
+//    ("Standard error estimation by an automated blocking method", Phys.
+//    Rev. E 98, 043304 (2018), Eq. (12) and its theorem). With sigma_i^2 =
+//    (n_i - 1) s_i^2 / n_i and the lag-one autocovariance gamma_i = (1/n_i)
+//    sum_t (y_t - mean)(y_{t+1} - mean) of level i's block means y,
+//      M = sum over the levels i = k - 2, k - 1, k (as many as exist) of
+//          n_i ((n_i - 1) sigma_i^2 / n_i^2 + gamma_i)^2 / sigma_i^4,
+//    which for uncorrelated blocks is about chi-squared with as many degrees
+//    of freedom as it has terms. Only the batches' own level and the two
+//    below it (16 to 127 blocks): a level of a handful of blocks says
+//    nothing (with 2 blocks a term is always 1/8). The error is NaN while M
+//    exceeds chi-squared's 99 % quantile.
+//    Measured (tests/test_blocking.cpp, "the test's false alarms and
+//    power", 2000 series each): on independent normal samples it blanks the
+//    error 0.2 % to 1.3 % of the time, at any length from 16 samples to
+//    10^4. On AR(1) series x_{t+1} = phi x_t + noise, correlation time tau =
+//    (1 + phi) / (2 (1 - phi)), it blanks nearly every error while a batch
+//    is a few tau long (phi = 0.5 at 100 samples, batches of 4 = 2.7 tau:
+//    97 %; phi = 0.9 at 300 and 1000 samples, batches of 16 and 32 = 1.7
+//    and 3.4 tau: 100 %) and few once it is ten or more (phi = 0.9 at 3000,
+//    128 = 13 tau: 13 %); the errors it lets through then scatter like
+//    Student's t (root mean square 1.02 to 1.10). Shorter still it can
+//    miss: at 16 samples, phi = 0.5 leaves 90 % of the errors, two times
+//    too small. A straight ramp under noise as large as its whole rise is
+//    caught in 60 % of series of 256 samples, all of 1000. A slow drift
+//    buried in fast noise, like a gas's heat, it cannot see (its variance
+//    1/2000 of the noise's, tau = 1000: 99 % of series of 3000 pass, their
+//    errors 1.4 times too small): hence rule 2.
+// So for independent samples the error is known from 16 samples on. On the
+// gas itself (build/gas, data/reports/kinetic-seeds.md, "spread": 40 gases
+// like data/large-1000.scene at T = 150 ... 12000) wherever an error is
+// shown (x - mean) / error scatters 0.93 to 1.16 over the seeds.
 //
 // The chosen e_k is biased low by the correlation left between batches of
 // length b = 2^k, a fraction of order tau / b (for a positively correlated
@@ -76,6 +84,14 @@
 #include <vector>
 
 namespace gas {
+
+// Why an error is not known (NaN), or that it is.
+enum class ErrorStatus {
+  known,
+  few_samples,         // fewer than fewest_blocks samples
+  short_batches,       // the batches are shorter than shortest_batch samples
+  correlated_batches,  // Jonsson's test sees the batches correlated
+};
 
 // One blocking level: blocks of 2^level samples.
 struct BlockingLevel {
@@ -89,14 +105,25 @@ struct BlockingLevel {
 
 class BlockingAnalysis {
  public:
-  // The fewest blocks the chosen level has (see the rule above).
-  static constexpr std::size_t fewest_blocks = 8;
+  // The fewest batches the error is taken from (see the rule above): 16
+  // unless a caller's samples ask for fewer, longer batches (the Lyapunov
+  // exponent's, whose neighbours are anticorrelated: beyond/lyapunov.hpp).
+  static constexpr std::size_t default_fewest_blocks = 16;
+  BlockingAnalysis() = default;
+  explicit BlockingAnalysis(std::size_t fewest_blocks)
+      : fewest_blocks_(fewest_blocks < 2 ? 2 : fewest_blocks) {}
+  std::size_t fewest_blocks() const { return fewest_blocks_; }
+  // The levels Jonsson's test looks at: the batches' own and this many below.
+  static constexpr std::size_t test_levels_below = 2;
 
   // Adds one sample. O(1) amortised (each sample climbs one level on
   // average), O(log n) worst case.
   void add(double x);
-  // Forgets every sample (to restart the averages).
+  // Forgets every sample (to restart the averages); keeps shortest_batch.
   void clear();
+  // Rule 2: no error until the batches hold at least this many samples.
+  void set_shortest_batch(std::size_t samples) { shortest_batch_ = samples; }
+  std::size_t shortest_batch() const { return shortest_batch_; }
 
   std::size_t count() const { return count_; }  // samples so far
   // The mean of all samples so far (NaN if none).
@@ -105,13 +132,24 @@ class BlockingAnalysis {
   // independent (NaN with fewer than 2 samples).
   double naive_error() const;
   // The standard error of the mean by the rule above; NaN ("not known")
-  // before there are 8 samples, or while the batches are still correlated.
+  // before there are 16 samples, while the batches are shorter than
+  // shortest_batch, or while they look correlated.
   double error() const;
+  // Whether the error is known, and if not why.
+  ErrorStatus status() const;
+  // e_k of the batches' level whatever rules 2 and 3 say (NaN before 16
+  // samples): what the batches alone would claim.
+  double batch_error() const;
+  // The batches' level, whether or not the error is known there (-1 before
+  // there are 16 samples).
+  int batch_level() const;
   // The level the error was taken from, or -1 if the error is not known.
   int chosen_level() const;
-  // Jonsson's M_k over the levels from k up (NaN if level k has < 2 blocks),
-  // and the number of its terms, the degrees of freedom of its chi-squared.
-  double jonsson_m(std::size_t k, std::size_t* terms = nullptr) const;
+  // Jonsson's M over levels first ... last (those with at least 2 blocks;
+  // NaN if level `first` has fewer), and the number of its terms, the
+  // degrees of freedom of its chi-squared.
+  double jonsson_m(std::size_t first, std::size_t last,
+                   std::size_t* terms = nullptr) const;
   // (error / naive error)^2: the statistical inefficiency, about 2 tau for a
   // series with integrated correlation time tau (1 for independent samples);
   // NaN while the error is not known.
@@ -141,6 +179,8 @@ class BlockingAnalysis {
 
   std::size_t count_ = 0;
   double origin_ = 0;  // the first sample
+  std::size_t fewest_blocks_ = default_fewest_blocks;
+  std::size_t shortest_batch_ = 1;
   std::vector<Level> levels_;
 };
 

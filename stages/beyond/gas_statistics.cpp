@@ -9,7 +9,6 @@
 
 #include "beyond/boltzmann_h.hpp"
 #include "beyond/fluid_structure.hpp"
-#include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
 
 namespace gas {
@@ -93,6 +92,7 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   for (std::size_t i = 0; i < balls_; ++i) speed_enters(i, gas.balls[i], gas.time);
   // A sample for the error bars every N collisions: about two a ball.
   collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_));
+  heat_time_ = table_heat_time(gas);
   // The warm-up, in collisions of two balls: each counts for two balls.
   warm_up_per_ball_ = warm_up ? warm_up_collisions_a_ball(gas) : 0;
   warm_up_until_ = (warm_up_per_ball_ * static_cast<long long>(balls_) + 1) / 2;
@@ -255,19 +255,36 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
     if (ball_collisions_ >= warm_up_until_) start_averages(gas);
     return;
   }
-  // A sample for the error bars: each quantity over the last N collisions.
+  // Every N collisions, a sample for the error bars.
   if (++sample_collisions_ < collisions_per_sample_) return;
-  const Sums now = sums_at(gas, c.time);
+  take_sample(gas, c.time);
+}
+// [/anchor: collision-sums]
+
+// [anchor: error-samples]
+// A sample for the error bars: each quantity over the last N collisions, to
+// its blocking analysis. The quantities that follow the table's heat get
+// batches at least table_heat_time long (blocking.hpp, rule 2), in samples
+// of the mean length so far.
+void GasStatistics::take_sample(const Gas& gas, double time) {
+  const Sums now = sums_at(gas, time);
   const Sums sample = now.minus(sample_start_);
   sample_start_ = now;
   sample_collisions_ = 0;
   if (!(sample.duration > 0)) return;
+  const auto samples = static_cast<double>(blocking_[mean_speed_q].count() + 1);
+  const double batch =
+      std::isfinite(heat_time_) ? heat_time_ / (now.duration / samples) : 1;
+  const auto shortest = static_cast<std::size_t>(std::max(1.0, std::ceil(batch)));
   for (int q = 0; q < quantity_count; ++q) {
+    BlockingAnalysis& blocking = blocking_[static_cast<std::size_t>(q)];
+    if (follows_table_heat(static_cast<Quantity>(q)))
+      blocking.set_shortest_batch(shortest);
     const double value = value_of(static_cast<Quantity>(q), sample);
-    if (std::isfinite(value)) blocking_[static_cast<std::size_t>(q)].add(value);
+    if (std::isfinite(value)) blocking.add(value);
   }
 }
-// [/anchor: collision-sums]
+// [/anchor: error-samples]
 
 void GasStatistics::start_averages(const Gas& gas) {
   averaging_ = true;
@@ -332,8 +349,9 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return 1 + s.virial / (2 * t * n * kT_);
     case bulk_z_q:  // the same for the interior, N_int t = its ball-time
       return bulk_z;
-    case bulk_z_minus_theory_q:  // against the reference at this stretch's eta
-      return bulk_z - hard_disc_fluid_compressibility(eta);
+    case bulk_z_minus_theory_q:  // against the reference at this stretch's eta,
+                                 // for a closed box of N balls
+      return bulk_z - fixed_count_compressibility(eta, balls_);
     case interior_eta_q:  // n_int pi a^2
       return eta;
     case interior_kT_q:
@@ -343,16 +361,18 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
     case collision_rate_q:
       return rate;
     case collision_rate_minus_theory_q:
-      return rate - enskog_collision_rate(eta, radius_, kT_inside);
+      return rate - enskog_collision_rate(eta, radius_, kT_inside) *
+                        fixed_count_rate_factor(eta, balls_);
     case mean_free_path_q:  // the interior's mean speed over its rate
       return s.interior_speed / s.interior_time / rate;
     case wall_middle_pressure_q:
       return s.push_x_middle / t;
-    case pressure_minus_theory_q: {  // against the bulk's P = Z_ref n kT in
-      // front of the middles, at this stretch's eta and kT there
-      return s.push_x_middle / t -
-             hard_disc_fluid_pressure(value_of(beside_walls_eta_q, s),
-                                      value_of(beside_walls_kT_q, s), radius_);
+    case pressure_minus_theory_q: {  // against the bulk's P = Z n kT in front
+      // of the middles, at this stretch's eta and kT there, Z for N balls
+      const double eta_beside = value_of(beside_walls_eta_q, s);
+      return s.push_x_middle / t - fixed_count_compressibility(eta_beside, balls_) *
+                                       eta_beside * value_of(beside_walls_kT_q, s) /
+                                       (std::numbers::pi * a2);
     }
     case beside_walls_eta_q:
       return s.beside_time / t / (beside_left_.area() + beside_right_.area()) *
@@ -361,13 +381,28 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
       return s.beside_energy / (2 * s.beside_time);
     case mean_free_path_minus_theory_q:
       return s.interior_speed / s.interior_time / rate -
-             enskog_mean_free_path(eta, radius_);
+             enskog_mean_free_path(eta, radius_) / fixed_count_rate_factor(eta, balls_);
     case quantity_count:
       break;
   }
   return not_known;
 }
 // [/anchor: measured-quantities]
+
+bool GasStatistics::follows_table_heat(Quantity q) {
+  switch (q) {
+    case bulk_z_minus_theory_q:
+    case collision_rate_minus_theory_q:
+    case pressure_minus_theory_q:
+    case mean_free_path_minus_theory_q:
+    case collision_rate_box_q:
+    case collision_rate_q:
+    case quantity_count:
+      return false;
+    default:
+      return true;
+  }
+}
 
 // Where each quantity goes among the figures (a switch, so that the compiler
 // names any quantity left out).
@@ -419,9 +454,11 @@ Average& GasStatistics::average_of(MeasuredFigures& m, Quantity q) {
 
 Average average_with_error(const BlockingAnalysis& samples, double scale) {
   Average average{scale * samples.mean(), scale * samples.error()};
+  average.status = samples.status();
+  average.batch_error = scale * samples.batch_error();
   if (std::isnan(average.error)) {
     average.why_no_error =
-        samples.count() < BlockingAnalysis::fewest_blocks ? "few samples" : "not yet";
+        average.status == ErrorStatus::few_samples ? "few samples" : "not yet";
   }
   return average;
 }

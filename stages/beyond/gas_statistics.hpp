@@ -37,12 +37,18 @@ inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 // blocking analysis); the error is not known (NaN) until the analysis finds
 // it, the value not known before the averages start. While the error is
 // blank, `why_no_error` may say why in a few words, which the statistics
-// screen shows in its place: "few samples" (fewer than the blocking's 8),
-// "not yet" (its batches still look correlated: the run must go on).
+// screen shows in its place: "few samples" (fewer than the blocking's 16),
+// "not yet" (its batches are shorter than the table's heat time, or still
+// look correlated: the run must go on).
 struct Average {
   double value = not_known;
   double error = not_known;
   const char* why_no_error = nullptr;  // a short reason, or none
+  // Why the error is not known, or that it is (beyond/blocking.hpp).
+  ErrorStatus status = ErrorStatus::few_samples;
+  // What the batches alone would claim (BlockingAnalysis::batch_error): the
+  // error once it is known; before, a figure too short to trust.
+  double batch_error = not_known;
 };
 
 // The mean of `samples` times `scale`, with its error by the blocking rule,
@@ -184,9 +190,16 @@ class GasStatistics final : public CollisionObserver {
     quantity_count
   };
   double value_of(Quantity q, const Sums& s) const;
+  // Does the quantity wander with the table's heat (measured: its blocking
+  // curve still rises past the sound's crossing time), so that its error
+  // waits for batches as long as table_heat_time? The differences from
+  // theory, taken sample by sample, do not; nor do the collision rates.
+  static bool follows_table_heat(Quantity q);
   static Average& average_of(MeasuredFigures& m, Quantity q);
 
   void start_averages(const Gas& gas);
+  // Closes a sample for the error bars at `time` (every N collisions).
+  void take_sample(const Gas& gas, double time);
   Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress
   int bin_of(double speed) const;                  // bins() for the faster ones
   // Ball number `i` (from 0) gets a new speed at `time`: it comes into the
@@ -213,6 +226,7 @@ class GasStatistics final : public CollisionObserver {
   Region beside_left_, beside_right_;
   double bin_width_ = 0;
   long long collisions_per_sample_ = 1;
+  double heat_time_ = 0;  // table_heat_time: the shortest batch, in model time
 
   // The state as of the last collision.
   long long collisions_ = 0;        // since this object was made

@@ -109,6 +109,22 @@ double hard_disc_fluid_compressibility_slope(double area_fraction) {
   return dz_dx / (one_minus * one_minus);  // dx/deta = 1 / (1 - eta)^2
 }
 
+double hard_disc_fluid_compressibility_curvature(double area_fraction) {
+  if (!in_fluid_range(area_fraction)) return unknown;
+  // Z(x(eta)) with dx/deta = (1 + x)^2 and d^2x/deta^2 = 2 (1 + x)^3:
+  // Z'' = Z_xx (1 + x)^4 + 2 Z_x (1 + x)^3.
+  const double x = area_fraction / (1 - area_fraction);
+  double dz_dx = 0, d2z_dx2 = 0;
+  for (const FluidTerm& term : kolafa_rottner) {
+    const double c = term.coefficient;
+    const int k = term.power;
+    if (k > 0) dz_dx += k * c * std::pow(x, k - 1);
+    if (k > 1) d2z_dx2 += k * (k - 1) * c * std::pow(x, k - 2);
+  }
+  const double one_plus = 1 + x;
+  return d2z_dx2 * std::pow(one_plus, 4) + 2 * dz_dx * std::pow(one_plus, 3);
+}
+
 double hard_disc_fluid_contact_value(double area_fraction) {
   if (!in_fluid_range(area_fraction)) return unknown;
   if (area_fraction == 0) return 1;  // the limit: Z = 1 + 2 eta + ...

@@ -55,6 +55,12 @@ double hard_disc_fluid_compressibility(double area_fraction);
 // fluctuations, follow: d(eta Z)/deta = Z + eta dZ/deta = (dP/drho) / kT.
 double hard_disc_fluid_compressibility_slope(double area_fraction);
 
+// d^2Z / deta^2 of the same (no units); NaN outside 0 <= eta <= 0.70. With
+// the slope it gives how P = Z n kT curves in the density, d^2(eta Z)/deta^2
+// = 2 Z' + eta Z'', which sets how much a closed box's interior differs
+// from the open bulk (beyond/kinetic_theory.hpp, fixed_count_shift).
+double hard_disc_fluid_compressibility_curvature(double area_fraction);
+
 // The bulk fluid's pressure (a force per unit length: the table is a plane)
 // at area fraction eta and temperature kT, for discs of radius a:
 // P = Z n kT with n = eta / (pi a^2). NaN outside 0 <= eta <= 0.70.

@@ -130,6 +130,7 @@ constexpr Column columns[] = {
     {"mean_free_path_deviation_error", deviation_error<&M::mean_free_path_minus_theory>},
     {"g_contact_deviation", deviation_value<&M::pair_contact_minus_theory>},
     {"g_contact_deviation_error", deviation_error<&M::pair_contact_minus_theory>},
+    {"Z_fixed_N_shift", kinetic_value<&K::bulk_z_shift>},
 };
 
 }  // namespace

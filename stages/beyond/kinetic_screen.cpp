@@ -39,7 +39,11 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   const double eta_error = m.interior_area_fraction.error;
   // kT: the interior's own (the box's on average; lesson 13).
   const double kT = m.interior_kT.value, a = gas.radius, pi = std::numbers::pi;
-  const double z = hard_disc_fluid_compressibility(eta);
+  // The reference for a closed box of N balls (kinetic_theory.hpp): the
+  // open bulk's Z shifted by fixed_count_shift, Enskog's rate by its factor.
+  const std::size_t balls = gas.balls.size();
+  k.bulk_z_shift = fixed_count_shift(eta, balls);
+  const double z = fixed_count_compressibility(eta, balls);
   const double slope = hard_disc_fluid_compressibility_slope(eta);  // dZ / d eta
   // (A theory's error is eta's carried over: blank while eta's is, for its reason.)
   const char* const why = m.interior_area_fraction.why_no_error;
@@ -51,9 +55,9 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   // strips of the interior beside those middles, at their own eta and kT
   // (their slow sound waves push on the middles too; lesson 14).
   const double eta_beside = m.beside_walls_eta.value, kT_beside = m.beside_walls_kT.value;
-  const double z_beside = hard_disc_fluid_compressibility(eta_beside);
+  const double z_beside = fixed_count_compressibility(eta_beside, balls);
   k.pressure_theory = {
-      hard_disc_fluid_pressure(eta_beside, kT_beside, a),
+      z_beside * eta_beside * kT_beside / (pi * a * a),
       std::abs(z_beside +
                eta_beside * hard_disc_fluid_compressibility_slope(eta_beside)) *
           kT_beside / (pi * a * a) * m.beside_walls_eta.error,
@@ -61,11 +65,12 @@ KineticFigures kinetic_figures(const Gas& gas, const GasStatistics& statistics,
   // Enskog: rate = 2 (2a) n g sqrt(pi kT) with n g = (Z - 1) / (2 eta) n
   // = (Z - 1) / (2 pi a^2), so d rate / d eta = Z' 2 sqrt(pi kT) / (pi a);
   // the free path lambda = sqrt(pi kT / 2) / rate moves the other way.
-  const double rate = enskog_collision_rate(eta, a, kT);
+  const double factor = fixed_count_rate_factor(eta, balls);
+  const double rate = enskog_collision_rate(eta, a, kT) * factor;
   const double rate_error =
       std::abs(slope) * 2 * std::sqrt(pi * kT) / (pi * a) * eta_error;
   k.collision_rate_theory = {rate, rate_error, why};
-  const double path = enskog_mean_free_path(eta, a);
+  const double path = enskog_mean_free_path(eta, a) / factor;
   k.mean_free_path_theory = {path, path * rate_error / rate, why};
   // The reference g(2a)'s uncertainty, from eta's: |dg/deta| x eta's error.
   k.pair_contact_theory_error =
@@ -79,6 +84,11 @@ namespace {
 // A figure for the screen: 5 significant digits, "-" when not known.
 std::string shown(double value) {
   return std::isnan(value) ? std::string("-") : fmt::format("{:.5g}", value);
+}
+
+// A small shift with its sign, 2 significant digits, "-" when not known.
+std::string signed_shown(double value) {
+  return std::isnan(value) ? std::string("-") : fmt::format("{:+.2g}", value);
 }
 
 // An average and its error: "1.2345 +- 0.0012"; while the error is not
@@ -177,12 +187,12 @@ constexpr int histogram_rank = 9;
 
 // A row of the table: a label, the measured average with its error, the
 // theory of the same thing with its error, and the theory's name. The
-// columns start at fixed places (17, 42 and 61 characters in), each cut to
+// columns start at fixed places (17, 41 and 61 characters in), each cut to
 // leave a blank before the next.
 std::string table_row(const char* label, const std::string& measured,
                       const std::string& theory, const std::string& source) {
-  return fmt::format("{:<17}{:<25}{:<19}{}", label, measured.substr(0, 24),
-                     theory.substr(0, 18), source);
+  return fmt::format("{:<17}{:<24}{:<20}{}", label, measured.substr(0, 23),
+                     theory.substr(0, 19), source);
 }
 
 // The gas now (stage 6's figures), the units, H, and since when the
@@ -237,9 +247,11 @@ std::vector<FigureLine> table_lines(const KineticFigures& k) {
                  k.many_balls ? "Henderson " + shown(k.bulk_z_henderson) : ""),
        6, "Z"},
       // Z - Z_ref, sample by sample (its error is the smaller): 0 if the
-      // reference holds.
+      // reference holds. The reference is for N balls in a closed box: the
+      // open bulk's shifted by fixed_count_shift, shown beside it.
       {table_row("  Z - reference", k.many_balls ? shown(m.bulk_z_minus_theory) : "-",
-                 k.many_balls ? "0" : few_balls, ""),
+                 k.many_balls ? "0" : few_balls,
+                 k.many_balls ? "N fixed " + signed_shown(k.bulk_z_shift) : ""),
        13, "Z - ref"},
       {table_row("g(2a) inside", shown(m.pair_contact), bulk(contact_theory),
                  k.many_balls ? "reference" : ""),

@@ -35,7 +35,8 @@ struct KineticFigures {
   KineticTheory theory;      // the predictions for this gas, at eta = N pi a^2 / A
   MeasuredFigures measured;  // the averages, the histogram, H
   bool many_balls = false;  // N >= kinetic_theory_fewest_balls: the bulk's theory applies
-  Average bulk_z_theory;    // the reference Z at eta_int
+  Average bulk_z_theory;    // the reference Z at eta_int, for a closed box of N balls
+  double bulk_z_shift = not_known;  // its shift from the open bulk's (fixed_count_shift)
   double bulk_z_henderson = not_known;  // Henderson's at the same eta
   Average pressure_theory;  // Z_ref n kT in the strips in front of the walls' middles
   double pair_contact_theory = not_known;  // the reference g(2a) at the interior's eta

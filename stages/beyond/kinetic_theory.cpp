@@ -84,6 +84,47 @@ double enskog_mean_free_path(double eta, double radius) {
 }
 // [/anchor: enskog]
 
+// [anchor: fixed-count]
+// The closed box's interior against the open bulk: kinetic_theory.hpp
+// derives dZ = -eta (2 Z' + eta Z'') / (2 N (Z + eta Z')).
+double fixed_count_shift(double area_fraction, std::size_t balls) {
+  if (balls == 0) return 0;
+  if (area_fraction > fixed_count_area_fraction_limit &&
+      area_fraction <= fluid_area_fraction_limit)
+    return 0;
+  const double eta = area_fraction, z = hard_disc_fluid_compressibility(eta);
+  const double slope = hard_disc_fluid_compressibility_slope(eta);
+  const double curvature = hard_disc_fluid_compressibility_curvature(eta);
+  return -eta * (2 * slope + eta * curvature) /
+         (2 * static_cast<double>(balls) * (z + eta * slope));
+}
+
+double fixed_count_compressibility(double area_fraction, std::size_t balls) {
+  return hard_disc_fluid_compressibility(area_fraction) +
+         fixed_count_shift(area_fraction, balls);
+}
+
+double fixed_count_rate_factor(double area_fraction, std::size_t balls) {
+  if (balls == 0) return 1;
+  // At eta = 0, dZ / (Z - 1) -> -(2 Z'(0)) / (2 N) / Z'(0) = -1 / N.
+  if (area_fraction == 0) return 1 - 1 / static_cast<double>(balls);
+  return 1 + fixed_count_shift(area_fraction, balls) /
+                 (hard_disc_fluid_compressibility(area_fraction) - 1);
+}
+// [/anchor: fixed-count]
+
+double table_heat_time(const Gas& gas) {
+  const std::size_t n = gas.balls.size();
+  const double kT = n > 0 ? kinetic_energy(gas) / static_cast<double>(n) : 0.0;
+  if (n < 2 || !(kT > 0)) return std::numeric_limits<double>::quiet_NaN();
+  const double eta = static_cast<double>(n) * std::numbers::pi * gas.radius * gas.radius /
+                     (gas.width * gas.height);
+  const double diffusivity =
+      enskog_mean_free_path(eta, gas.radius) * std::sqrt(std::numbers::pi * kT / 2);
+  const double wave = std::max(gas.width, gas.height) / (2 * std::numbers::pi);  // 1 / k
+  return wave * wave / diffusivity;
+}
+
 KineticTheory kinetic_theory(const Gas& gas) {
   return kinetic_theory(gas, kinetic_energy(gas));
 }

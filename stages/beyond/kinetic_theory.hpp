@@ -38,10 +38,10 @@ struct KineticTheory {
 // [/anchor: kinetic-theory]
 
 // The predictions of the bulk fluid (its equation of state, Enskog's rate)
-// hold for a gas of many balls: with N balls each ball has N - 1 partners,
-// not N, and the box's walls take their share, corrections of order 1 / N
-// that runs of a few balls resolve (lesson 14). Below this many balls the
-// screen says so instead of showing a number.
+// hold for a gas of many balls: the closed box's 1 / N is taken into them
+// (fixed_count_shift, below), but with a few balls the walls take so large
+// a share that there is no interior to speak of (lesson 14). Below this
+// many balls the screen says so instead of showing a number.
 inline constexpr std::size_t kinetic_theory_fewest_balls = 100;
 
 KineticTheory kinetic_theory(const Gas& gas);
@@ -68,6 +68,49 @@ double fixed_energy_mean_speed(std::size_t balls, double kT);
 // NaN where the reference has no value (eta beyond the fluid).
 double enskog_collision_rate(double eta, double radius, double kT);
 double enskog_mean_free_path(double eta, double radius);
+
+// The interior of a closed box of N balls against the open bulk at the same
+// density (Lebowitz and Percus, "Thermodynamic properties of small systems",
+// Phys. Rev. 124, 1673 (1961): averages at fixed N differ from those of an
+// open system by a series in 1/N whose terms follow from the open system's
+// own averages). An open box's count N would wander by Var N = N S(0), S(0)
+// = 1 / (Z + eta Z') the compressibility, and its interior is the bulk: the
+// push of its collisions per unit area, w = P - n kT, is the bulk's w(n) on
+// average. The closed box is the open one at one N; averaging over N,
+//   w_open = w_N + w''(n) Var(N) (dn/dN)^2 / 2,   n_open = n_N + ...,
+// and as w_N = w(n_N) + O(1/N), the closed box's w lies below the curve
+// w(n) at its own measured n by Var(N) (dn/dN)^2 w''(n) / 2. With dn/dN =
+// n / N (a ball more raises the whole profile in proportion) and w = kT n
+// (Z - 1), w'' = kT pi a^2 (2 Z' + eta Z''), so Z = 1 + w / (n kT) shifts by
+//   dZ = -eta (2 Z' + eta Z'') / (2 N (Z + eta Z')),
+// some -0.85 / N at eta = 0.3 (-0.0033 at N = 256, 0.18 % of Z). At low
+// density it is -2 eta / N: each ball has N - 1 partners, not N. The
+// collisions inside follow w too, so Enskog's rate (and one over the free
+// path) carries the same factor 1 + dZ / (Z - 1). Checked on build/gas
+// against seeds at N = 256 and 1024 (data/reports/kinetic-seeds.md).
+// The expansion holds for a fluid far from its transition: above eta = 0.6
+// the reference's curvature turns (Z'' < 0 from 0.67 as the hexatic phase
+// nears, where the count's fluctuations are no longer small), and no shift
+// is applied there (fixed_count_area_fraction_limit): the theory is the
+// open bulk's. NaN outside the fluid range; 0 for no balls.
+inline constexpr double fixed_count_area_fraction_limit = 0.6;
+double fixed_count_shift(double area_fraction, std::size_t balls);
+// Z of the interior of a closed box of N balls: the reference plus the shift.
+double fixed_count_compressibility(double area_fraction, std::size_t balls);
+// The factor 1 + dZ / (Z - 1) on Enskog's rate (1 - 1 / N at eta = 0).
+double fixed_count_rate_factor(double area_fraction, std::size_t balls);
+
+// The time heat takes to even out between the middle of the table and its
+// edges: the relaxation time 1 / (D k^2) of the heat mode of wavelength L,
+// the table's longer side (k = 2 pi / L; the longest, k = pi / L, is odd
+// and leaves the middle's average alone), with kinetic theory's estimate of
+// the heat's diffusivity D = lambda <v> (lambda: Enskog's mean free path at
+// eta = N pi a^2 / (A1 A2), <v> = sqrt(pi kT / 2)). How long a figure of
+// the box must be averaged before its own samples can tell its error
+// (beyond/blocking.hpp, rule 2; lesson 14): some 370 time units for
+// data/large-1000.scene, 3000 for large-10000. NaN for fewer than 2 balls
+// or a gas at rest.
+double table_heat_time(const Gas& gas);
 
 // The Henderson equation of state of hard discs and its contact value g(2a),
 // as functions of the area fraction.

@@ -8,6 +8,7 @@ namespace gas {
 
 LyapunovExponent::LyapunovExponent(const Gas& gas, std::uint64_t seed)
     : seed_(seed), tangent_(gas, seed), balls_(gas.balls.size()) {
+  blocking_.set_shortest_batch(lyapunov_shortest_batch);
   start_warm_up(gas.time);
 }
 
