@@ -319,7 +319,7 @@ TEST_SUITE("vacf") {
   TEST_CASE("B drops the origins in progress") {
     // B turns every velocity round: a ball's velocity after it is not where
     // its velocity before it led, and an origin read across it sees -v. With
-    // B at T = 150 the gas's rho at tau_E .. 10 tau_E still agrees with the
+    // B at T = 150 the gas's rho at tau_E .. 20 tau_E still agrees with the
     // same gas's without B within five errors, with errors alike; read
     // across B, the origins that straddle it pull rho down and blow its
     // error up several times.
@@ -344,7 +344,9 @@ TEST_SUITE("vacf") {
     int compared = 0;
     for (std::size_t k = 1; k < files[0].size() && k < files[1].size(); ++k) {
       const double t = std::stod(files[0][k][0]);
-      if (t < tau || t > 10 * tau) continue;
+      // Twenty tau_E, not ten: at T = 300 the lags of 2.5 to 7 tau_E have
+      // no error yet (their batches still look correlated, blocking.hpp).
+      if (t < tau || t > 20 * tau) continue;
       const double a = std::stod(files[0][k][1]), b = std::stod(files[1][k][1]);
       const double ea = std::stod(files[0][k][2]), eb = std::stod(files[1][k][2]);
       if (!std::isfinite(ea) || !std::isfinite(eb)) continue;

@@ -187,12 +187,12 @@ constexpr int histogram_rank = 9;
 
 // A row of the table: a label, the measured average with its error, the
 // theory of the same thing with its error, and the theory's name. The
-// columns start at fixed places (17, 41 and 61 characters in), each cut to
+// columns start at fixed places (17, 42 and 61 characters in), each cut to
 // leave a blank before the next.
 std::string table_row(const char* label, const std::string& measured,
                       const std::string& theory, const std::string& source) {
-  return fmt::format("{:<17}{:<24}{:<20}{}", label, measured.substr(0, 23),
-                     theory.substr(0, 19), source);
+  return fmt::format("{:<17}{:<25}{:<19}{}", label, measured.substr(0, 24),
+                     theory.substr(0, 18), source);
 }
 
 // The gas now (stage 6's figures), the units, H, and since when the

@@ -67,9 +67,9 @@ double henderson_contact_value(double eta) {
 // Enskog's collision rate per ball in 2D: a ball meets the others at contact
 // distance s = 2a across a "cross-section" of length 2s, at the mean relative
 // speed sqrt(pi kT) (that of two Maxwellian velocities), and the density at
-// contact is g(s) times the mean: rate = 2 s n g(s) sqrt(pi kT). (Chapman
-// and Cowling's dilute rate with Enskog's factor g; in 2D, e.g. Gass,
-// J. Chem. Phys. 54, 1898 (1971).)
+// contact is g(s) times the mean: rate = 2 s n g(s) sqrt(pi kT). (The dilute
+// rate with Enskog's factor g, derived in these lines; the kinetic-theory
+// suite checks it against the rate the program measures inside the table.)
 double enskog_collision_rate(double eta, double radius, double kT) {
   const double density = eta / (std::numbers::pi * radius * radius);
   return 2 * (2 * radius) * density * hard_disc_fluid_contact_value(eta) *

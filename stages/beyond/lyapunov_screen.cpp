@@ -41,12 +41,9 @@ std::vector<std::string> lyapunov_lines(const Gas& gas, const LyapunovFigures& f
   const PrecisionHorizons h = precision_horizons(gas, f);
   const char* const why = f.exponent.why_no_error;
   return {
-      fmt::format("Lyapunov exponent: {} per unit time",
-                  with_error(f.exponent.value, f.exponent.error, why)),
-      // The collisions per ball count walls and pairs: (wall collisions +
-      // pair collisions) / N, each collision once (beyond/lyapunov.hpp).
       fmt::format(
-          "  {} per collision per ball (walls and pairs)",
+          "Lyapunov: {} per unit time, {} per collision per ball",
+          with_error(f.exponent.value, f.exponent.error, why),
           with_error(f.per_collision_per_ball, f.per_collision_per_ball_error, why)),
       fmt::format("  horizon to a/100 (collisions per ball): float {:.2g} double {:.2g} "
                   "long double {:.2g}",
