@@ -122,6 +122,11 @@ TEST_SUITE("kinetic-theory") {
     CHECK(screen.lines[9].substr(theory_column, 17) == "2.0638 +- not yet");
     CHECK(screen.lines[11].substr(measured_column, 19) == "1.75 +- few samples");
     CHECK(screen.lines[7].substr(measured_column, 6) == "1.25  ");
+    // A theory whose reason would be cut short stands alone, never
+    // "0.094784 +- few sa": the measured column beside it says why.
+    k.pressure_theory = {0.094784, gas::not_known, "few samples"};
+    gas::draw_kinetic_figures(screen, gas::testing::some_figures(), k);
+    CHECK(screen.lines[8].substr(theory_column, 19) == "0.094784           ");
   }
 
   TEST_CASE(

@@ -189,10 +189,19 @@ constexpr int histogram_rank = 9;
 // theory of the same thing with its error, and the theory's name. The
 // columns start at fixed places (17, 42 and 61 characters in), each cut to
 // leave a blank before the next.
+constexpr std::size_t measured_width = 24, theory_width = 18;  // characters
 std::string table_row(const char* label, const std::string& measured,
                       const std::string& theory, const std::string& source) {
-  return fmt::format("{:<17}{:<25}{:<19}{}", label, measured.substr(0, 24),
-                     theory.substr(0, 18), source);
+  return fmt::format("{:<17}{:<25}{:<19}{}", label, measured.substr(0, measured_width),
+                     theory.substr(0, theory_width), source);
+}
+
+// A theory in its column: its error waits for the same samples as the
+// measured figure beside it, so where the reason would be cut short the
+// value stands alone (the measured column says why).
+std::string theory_shown(const Average& theory) {
+  const std::string full = shown(theory);
+  return full.size() <= theory_width ? full : shown(theory.value);
 }
 
 // The gas now (stage 6's figures), the units, H, and since when the
@@ -233,7 +242,7 @@ std::vector<FigureLine> table_lines(const KineticFigures& k) {
   const KineticTheory& t = k.theory;
   const MeasuredFigures& m = k.measured;
   auto bulk = [&](const Average& theory) {
-    return k.many_balls ? shown(theory) : std::string(few_balls);
+    return k.many_balls ? theory_shown(theory) : std::string(few_balls);
   };
   const Average contact_theory{k.pair_contact_theory, k.pair_contact_theory_error,
                                m.interior_area_fraction.why_no_error};
