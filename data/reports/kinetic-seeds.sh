@@ -343,12 +343,13 @@ if has eos; then
   echo "its error, in errors σ; Z's own error and the box's wait for the table's"
   echo "heat time (–)."
   echo
+  # A value with its error, or alone while the error is not known (both tables).
+  awk_shown='function shown(v, e) { return (e == "nan" || e == "-nan") ? sprintf("%.5f", v) : sprintf("%.5f ± %.5f", v, e) }'
   echo "<!-- section: eos -->"
   echo "| N/A | η_int | Z bulk | Z_theory | Z − Z_theory | Henderson | Z box: walls | Z box: virial |"
   echo "|---|---|---|---|---|---|---|---|"
   for eta in 0.1 0.3 0.5; do
-    awk -F, -v eta="$eta" '
-      function shown(v, e) { return (e == "nan" || e == "-nan") ? sprintf("%.5f", v) : sprintf("%.5f ± %.5f", v, e) }
+    awk -F, -v eta="$eta" "$awk_shown"'
       NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
       { last = $0 }
       END {
@@ -370,8 +371,7 @@ if has eos; then
   echo "| N/A | g(2a+) | reference g(2a) | kT n at the walls' middles | P on the walls' middles | contact theorem | P on the whole walls | bulk P |"
   echo "|---|---|---|---|---|---|---|---|"
   for eta in 0.1 0.3 0.5; do
-    awk -F, -v eta="$eta" '
-      function shown(v, e) { return (e == "nan" || e == "-nan") ? sprintf("%.5f", v) : sprintf("%.5f ± %.5f", v, e) }
+    awk -F, -v eta="$eta" "$awk_shown"'
       NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
       { last = $0 }
       END {
