@@ -50,6 +50,21 @@ void run_to(gas::Control& control, double end) {
     gas::take_display_step(control, end, nullptr, {false, false});
 }
 
+// A --vacf file's rows, each split into its fields (the header first).
+using CsvRows = std::vector<std::vector<std::string>>;
+CsvRows csv_rows(const std::string& path) {
+  CsvRows rows;
+  for (const std::string& line : lines_of(read_file(path)))
+    rows.push_back(fields_of(line));
+  return rows;
+}
+
+// Enskog's tau_E as a --vacf file writes it: its first lag t over
+// -ln(vacf_enskog) there (columns t and vacf_enskog).
+double enskog_time(const CsvRows& rows) {
+  return -std::stod(rows[2][0]) / std::log(std::stod(rows[2][3]));
+}
+
 // A gas of `count` balls of radius 1 at area fraction `eta` on a square
 // table, placed by a `random` or `lattice` line with seed `seed`, speed 1.
 Gas square_gas(int count, double eta, int seed, const char* line = "random") {
@@ -238,7 +253,7 @@ TEST_SUITE("vacf") {
     // Errors half or twice their size would give 2 or 0.5.
     const Scratch scratch;
     constexpr int seeds = 8;
-    std::vector<std::vector<std::vector<std::string>>> files;
+    std::vector<CsvRows> files;
     for (int seed = 1; seed <= seeds; ++seed) {
       const std::string scene = scratch.file(fmt::format("s{}.scene", seed));
       std::FILE* f = std::fopen(scene.c_str(), "w");
@@ -252,12 +267,9 @@ TEST_SUITE("vacf") {
       const auto run =
           run_program({scene, "--mode", "none", "--until", "150", "--vacf", out});
       REQUIRE(run.status == 0);
-      std::vector<std::vector<std::string>> rows;
-      for (const std::string& line : lines_of(read_file(out)))
-        rows.push_back(fields_of(line));
-      files.push_back(rows);
+      files.push_back(csv_rows(out));
     }
-    const double tau = -std::stod(files[0][2][0]) / std::log(std::stod(files[0][2][3]));
+    const double tau = enskog_time(files[0]);
     double squares = 0;
     int count = 0;
     for (const double lag : {0.01, 0.1, 1.0, 3.0, 10.0, 25.0}) {
@@ -324,7 +336,7 @@ TEST_SUITE("vacf") {
     // across B, the origins that straddle it pull rho down and blow its
     // error up several times.
     const Scratch scratch;
-    std::vector<std::vector<std::vector<std::string>>> files;
+    std::vector<CsvRows> files;
     for (const bool reverse : {false, true}) {
       const std::string out = scratch.file(reverse ? "b.csv" : "a.csv");
       std::vector<std::string> arguments = {
@@ -335,12 +347,9 @@ TEST_SUITE("vacf") {
       }
       const auto run = run_program(arguments);
       REQUIRE(run.status == 0);
-      std::vector<std::vector<std::string>> rows;
-      for (const std::string& line : lines_of(read_file(out)))
-        rows.push_back(fields_of(line));
-      files.push_back(rows);
+      files.push_back(csv_rows(out));
     }
-    const double tau = -std::stod(files[0][2][0]) / std::log(std::stod(files[0][2][3]));
+    const double tau = enskog_time(files[0]);
     int compared = 0;
     for (std::size_t k = 1; k < files[0].size() && k < files[1].size(); ++k) {
       const double t = std::stod(files[0][k][0]);
