@@ -177,8 +177,12 @@ TEST_SUITE("pictures") {
     CHECK(wide.lines.back() ==
           fmt::format("+- {} {}+", legend, std::string(64 - 5 - legend.size(), '-')));
     // Narrower: the ramp alone, its corners kept; then nothing.
-    for (const auto& [columns, border] :
+    for (const auto& narrow :
          {std::pair{18, "+- [ .:-=+*#%@] -+"}, std::pair{16, "+--------------+"}}) {
+      // Plain names, not a structured binding: Clang 14 does not let
+      // CAPTURE's lambda capture one.
+      const int columns = narrow.first;
+      const std::string border = narrow.second;
       CAPTURE(columns);
       gas::TextScreen screen = gas::prepare_screen(gas, columns, 12);
       REQUIRE(screen.columns == columns);
