@@ -600,12 +600,22 @@ Gas build_gas(const SceneDescription& scene) {
   return scene.gas;
 }
 
-namespace {
+#ifndef GAS_STUDENT_SCENE_TEXT  // see lessons/exercises/02-scene-text
+// [anchor: scene-text]
+std::string scene_text(const Gas& gas) {
+  // The lines themselves are write_scene_text's, below: here its pieces are
+  // joined into one text.
+  std::string text;
+  write_scene_text(gas, [&text](std::string_view piece) { text += piece; });
+  return text;
+}
+// [/anchor: scene-text]
+#endif
 
-// The lines of a scene file written by gas before its 'ball' lines: a
-// comment, T, a, T0, A1, A2 and N, every number with 17 significant digits.
-std::string scene_heading(const Gas& gas) {
-  return fmt::format(
+void write_scene_text(const Gas& gas,
+                      const std::function<void(std::string_view piece)>& write) {
+  // Write the heading: a comment, T, a, T0, A1, A2 and N.
+  std::string text = fmt::format(
       "# A checkpoint written by gas (--dump) at model time T = {:.17g}.\n"
       "# Each ball line is the ball's row as the run keeps it: its centre x y\n"
       "# at the moment SINCE it last collided, its velocity vx vy, and SINCE;\n"
@@ -614,33 +624,13 @@ std::string scene_heading(const Gas& gas) {
       "#    x y vx vy SINCE\n",
       gas.time, gas.time, gas.radius, gas.display_step, gas.width, gas.height,
       gas.balls.size());
-}
-
-// Adds a ball's line to `text`: its row as it is, 'ball x y vx vy SINCE'.
-void add_ball_line(std::string& text, const Ball& ball) {
-  fmt::format_to(std::back_inserter(text),
-                 "ball {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", ball.x, ball.y,
-                 ball.vx, ball.vy, ball.since);
-}
-
-}  // namespace
-
-#ifndef GAS_STUDENT_SCENE_TEXT  // see lessons/exercises/02-scene-text
-// [anchor: scene-text]
-std::string scene_text(const Gas& gas) {
-  std::string text = scene_heading(gas);
-  for (const Ball& ball : gas.balls) add_ball_line(text, ball);
-  return text;
-}
-// [/anchor: scene-text]
-#endif
-
-void write_scene_text(const Gas& gas,
-                      const std::function<void(std::string_view piece)>& write) {
+  // Write each ball's row as it is, 'ball x y vx vy SINCE', handing the text
+  // on whenever some 64 kB have gathered.
   constexpr std::size_t piece = std::size_t{1} << 16;
-  std::string text = scene_heading(gas);
   for (const Ball& ball : gas.balls) {
-    add_ball_line(text, ball);
+    fmt::format_to(std::back_inserter(text),
+                   "ball {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", ball.x, ball.y,
+                   ball.vx, ball.vy, ball.since);
     if (text.size() >= piece) {
       write(text);
       text.clear();
