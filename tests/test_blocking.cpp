@@ -175,6 +175,34 @@ TEST_SUITE("kinetic-theory") {
     CHECK(slow.error() == ar1_blocking(0, 1000, 3).error());
   }
 
+  TEST_CASE("blocking: Jonsson's test leaves out the levels rule 2 calls too short") {
+    // Independent noise plus a square wave of period 16 (+1 for 8 samples,
+    // -1 for 8): blocks of 8 swing +1, -1, +1, ... (the test's terms for
+    // them are huge), blocks of 16 and 32 hold whole periods and see the
+    // noise alone. 1000 samples: batches of 32 (level 5), the test on
+    // levels 3, 4, 5. Told that batches must be 16 long, it looks at levels
+    // 4 and 5 only, and the error (the noise's: the wave adds nothing to a
+    // block of 32) is known; told nothing, the swinging level 3 blanks it.
+    auto swinging = [](std::size_t shortest) {
+      std::mt19937_64 random(11);
+      std::normal_distribution<double> normal(0, 1);
+      gas::BlockingAnalysis blocking;
+      blocking.set_shortest_batch(shortest);
+      for (int t = 0; t < 1000; ++t)
+        blocking.add(normal(random) + ((t / 8) % 2 == 0 ? 1 : -1));
+      return blocking;
+    };
+    const gas::BlockingAnalysis told = swinging(16), untold = swinging(1);
+    REQUIRE(told.batch_level() == 5);
+    std::size_t terms = 0;
+    CHECK(untold.jonsson_m(3, 3, &terms) > 50);  // one term: chi-squared's 99 % is 6.6
+    CHECK(untold.status() == gas::ErrorStatus::correlated_batches);
+    CHECK(told.status() == gas::ErrorStatus::known);
+    // Within 30 % of the noise's error sqrt(1 / 1000) (31 batches: the
+    // estimate's own scatter is 13 %).
+    CHECK(told.error() == doctest::Approx(std::sqrt(1 / 1000.0)).epsilon(0.3));
+  }
+
   TEST_CASE("blocking: the test's false alarms and power, as blocking.hpp states them") {
     // Each case: 2000 seeded series (the same every run), the share whose
     // error the rule leaves unknown. Each bound sits some four binomial

@@ -155,7 +155,7 @@ TEST_SUITE("kinetic-theory") {
   }
 
   TEST_CASE("a snapshot by hand: the wall profile's integral is the number of centres") {
-    // A table 20 x 60 (radius 1): the interior (8 radii from every wall) is
+    // A table 20 x 60 (radius 1) with an interior (here 8 from every wall)
     // 8 <= x <= 12, 8 <= y <= 52, and the wall profile reaches the middle of
     // the table (d = 9 from the limits x = 1 and x = 19), so each centre in
     // the band 8 <= y <= 52 is in one strip. Five balls, resting (velocity
@@ -293,12 +293,13 @@ TEST_SUITE("kinetic-theory") {
     // figure's, which counts a strip's few centres per snapshot.
     CHECK(std::isnan(r.csv.at("pressure_error")));
     check_agree(r.csv, "wall_contact_pressure", "pressure", false);
-    // Beyond d = 7 (centres 8 radii from the wall) the strips are inside the
-    // interior: their density is the interior's, eta_int / (pi a^2), from
-    // the time the balls spend there. The strips' errors move together (a
-    // denser interior raises them all), so their mean error, not that over
-    // sqrt(60), bounds the error of their mean: three of it (a bound, and
-    // loose: 8 % here; a strip's area off by half, one wall for two, fails).
+    // Beyond d = 7 (centres 8 radii from the wall) the layers have died out
+    // (lesson 13): the strips' density is the interior's (which starts at
+    // 12 radii), eta_int / (pi a^2), from the time the balls spend there.
+    // The strips' errors move together (a denser interior raises them all),
+    // so their mean error, not that over sqrt(60), bounds the error of their
+    // mean: three of it (a bound, and loose: 8 % here; a strip's area off by
+    // half, one wall for two, fails).
     double plateau = 0, plateau_error = 0;
     int strips = 0;
     for (const gas::CurveBin& b : wall) {

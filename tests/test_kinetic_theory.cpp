@@ -365,6 +365,57 @@ TEST_SUITE("kinetic-theory") {
   }
 
   TEST_CASE(
+      "the mean speed's shortest batch: 25 pair collisions per ball at Enskog's rate") {
+    // data/large-1000.scene, by hand: rate = 2 (2a) n g(2a) sqrt(pi kT).
+    const Gas gas = gas::read_scene_file(GAS_SOURCE_DIR "/data/large-1000.scene");
+    const double kT = gas::kinetic_energy(gas) / 1000;
+    const double eta = 1000 * pi / (118.16 * 88.62);
+    const double rate =
+        2 * 2 * (eta / pi) * gas::hard_disc_fluid_contact_value(eta) * std::sqrt(pi * kT);
+    CHECK(gas::speeds_batch_time(gas) == doctest::Approx(25 / rate).epsilon(1e-12));
+    CHECK(gas::speeds_batch_time(gas) > 20);  // some 28 time units
+    CHECK(gas::speeds_batch_time(gas) < 40);
+    Gas one = gas;
+    one.balls.resize(1);
+    CHECK(std::isnan(gas::speeds_batch_time(one)));
+    Gas still = gas;
+    for (gas::Ball& b : still.balls) b.vx = b.vy = 0;
+    CHECK(std::isnan(gas::speeds_batch_time(still)));
+  }
+
+  TEST_CASE(
+      "the mean speed's error waits for its own batches, not for the table's heat") {
+    // data/large-1000.scene: the averages start after the warm-up (some 110
+    // time units). Sixteen batches of speeds_batch_time (some 28) need some
+    // 450 time units of averages, twice that at most (the batches are
+    // powers of two samples long); sixteen of the heat time (some 370),
+    // about 6000. At 250 time units of averages the mean speed has no error
+    // for its batches' length; at 1200, one, while eta_int still waits for
+    // the heat. (Without the batches' floor the error would show at 250;
+    // with the heat's, not at 1200.)
+    ObservedRun run(gas::read_scene_file(GAS_SOURCE_DIR "/data/large-1000.scene"));
+    Control& control = run.control;
+    const GasStatistics& statistics = run.start_statistics(10);
+    run_until(control, 150);
+    const gas::MeasuredFigures at_start = statistics.measured(control.gas);
+    REQUIRE_FALSE(at_start.warming_up);
+    const double since = at_start.since;
+    const double batch = gas::speeds_batch_time(control.gas);
+    REQUIRE(16 * batch > 250);
+    REQUIRE(2 * 16 * batch < 1200);
+    run_until(control, since + 250);
+    const gas::MeasuredFigures early = statistics.measured(control.gas);
+    CAPTURE(early.mean_speed.batch_error);
+    CHECK(std::isnan(early.mean_speed.error));
+    CHECK(early.mean_speed.status == gas::ErrorStatus::short_batches);
+    run_until(control, since + 1200);
+    const gas::MeasuredFigures later = statistics.measured(control.gas);
+    CAPTURE(later.mean_speed.status);
+    CHECK(std::isfinite(later.mean_speed.error));
+    CHECK(later.interior_area_fraction.status == gas::ErrorStatus::short_batches);
+  }
+
+  TEST_CASE(
       "the formulas: 2D Maxwell-Boltzmann and Henderson and Enskog agree with each "
       "other") {
     // The mean of the Rayleigh density by the midpoint rule (steps of 1e-4
@@ -483,15 +534,15 @@ TEST_SUITE("kinetic-theory") {
 
   TEST_CASE(
       "the time-averaged mean speed of GasStatistics converges to sqrt(pi kT / 2)") {
-    // The screen's own average over 600 time units after 30 to relax; its
-    // block error (some 30000 collisions: at least 16 blocks of 800 or more,
-    // over 10 collisions of each ball a block: independent enough) gives the
-    // tolerance, three errors.
+    // The screen's own average over 1500 time units after 30 to relax; its
+    // block error (at least 16 batches, each of speeds_batch_collisions = 25
+    // or more pair collisions per ball, ten times the mean speed's correlation
+    // time: lesson 14) gives the tolerance, three errors.
     ObservedRun run(lattice_gas(10, 0.3, 5));
     Control& control = run.control;
     run_until(control, 30);
     const GasStatistics& statistics = run.start_statistics(10);
-    run_until(control, 630);
+    run_until(control, 1530);
     const gas::MeasuredFigures m = statistics.measured(control.gas);
     const Average mean = m.mean_speed;
     const gas::KineticTheory theory = gas::kinetic_theory(control.gas);

@@ -165,7 +165,7 @@ TEST_SUITE("vacf") {
     // Exact for hard discs (enskog_transport.cpp): at t = 0+ only the
     // equilibrium distribution at contact enters. 20000 balls from a
     // lattice, 30 tau_E to forget it; then origins every tau_E / 20 read at
-    // 0.01, 0.02 and 0.03 tau_E only, in the bulk (8 radii from the walls).
+    // 0.01, 0.02 and 0.03 tau_E only, in the interior (12 radii from the walls).
     // rho(t) = 1 - t / tau_E + O(t^2): the ratio (1 - rho) / (1 -
     // exp(-t / tau_E)) takes out the exponential's own curvature, and what
     // the gas's differs from it at 0.01 tau_E is below 1e-3 (it is about

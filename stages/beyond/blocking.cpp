@@ -117,10 +117,13 @@ ErrorStatus BlockingAnalysis::status() const {
   const auto k = static_cast<std::size_t>(batches);
   // 2. Each batch at least shortest_batch_ samples.
   if ((std::size_t{1} << k) < shortest_batch_) return ErrorStatus::short_batches;
-  // 3. Jonsson's test on the batches' level and the two below it.
+  // 3. Jonsson's test on the batches' level and the two below it, as far as
+  //    their blocks are no shorter than rule 2's (a level rule 2 rules out
+  //    is expected to look correlated).
+  std::size_t first = k >= test_levels_below ? k - test_levels_below : 0;
+  while (first < k && (std::size_t{1} << first) < shortest_batch_) ++first;
   std::size_t terms = 0;
-  const double m =
-      jonsson_m(k >= test_levels_below ? k - test_levels_below : 0, k, &terms);
+  const double m = jonsson_m(first, k, &terms);
   if (!(m < chi_squared_quantile(static_cast<double>(terms), test_quantile_z)))
     return ErrorStatus::correlated_batches;
   return ErrorStatus::known;

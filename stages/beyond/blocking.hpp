@@ -41,7 +41,8 @@
 //    gas in a box wanders with the box's slowest motions, heat flowing
 //    between the middle of the table and its edges, whose correlation is
 //    too faint to see in the run itself (lesson 14): the
-//    statistics set it from the table's heat time (beyond/gas_statistics).
+//    statistics set it from the table's heat time, and for the mean speed
+//    from 25 pair collisions per ball (beyond/gas_statistics).
 // 3. Known only once the batches look uncorrelated: M. Jonsson's test
 //    ("Standard error estimation by an automated blocking method", Phys.
 //    Rev. E 98, 043304 (2018), Eq. (12) and its theorem). With sigma_i^2 =
@@ -52,8 +53,10 @@
 //    which for uncorrelated blocks is about chi-squared with as many degrees
 //    of freedom as it has terms. Only the batches' own level and the two
 //    below it (16 to 127 blocks): a level of a handful of blocks says
-//    nothing (with 2 blocks a term is always 1/8). The error is NaN while M
-//    exceeds chi-squared's 99 % quantile.
+//    nothing (with 2 blocks a term is always 1/8); and of those only the
+//    levels whose blocks are no shorter than rule 2's (a shorter one is
+//    correlated by what the caller knows, and would blank the error for
+//    it). The error is NaN while M exceeds chi-squared's 99 % quantile.
 //    Measured (tests/test_blocking.cpp, "the test's false alarms and
 //    power", 2000 series each): on independent normal samples it blanks the
 //    error 0.2 % to 1.3 % of the time, at any length from 16 samples to

@@ -93,6 +93,7 @@ GasStatistics::GasStatistics(const Gas& gas, int bins, bool warm_up,
   // A sample for the error bars every N collisions: about two a ball.
   collisions_per_sample_ = std::max<long long>(1, static_cast<long long>(balls_));
   heat_time_ = table_heat_time(gas);
+  speeds_time_ = speeds_batch_time(gas);
   // The warm-up, in collisions of two balls: each counts for two balls.
   warm_up_per_ball_ = warm_up ? warm_up_collisions_a_ball(gas) : 0;
   warm_up_until_ = (warm_up_per_ball_ * static_cast<long long>(balls_) + 1) / 2;
@@ -264,8 +265,9 @@ void GasStatistics::after_collision(const Gas& gas, const Collision& c) {
 // [anchor: error-samples]
 // A sample for the error bars: each quantity over the last N collisions, to
 // its blocking analysis. The quantities that follow the table's heat get
-// batches at least table_heat_time long (blocking.hpp, rule 2), in samples
-// of the mean length so far.
+// batches at least table_heat_time long (blocking.hpp, rule 2), the mean
+// speed batches of speeds_batch_collisions per ball: in samples of the mean
+// length so far.
 void GasStatistics::take_sample(const Gas& gas, double time) {
   const Sums now = sums_at(gas, time);
   const Sums sample = now.minus(sample_start_);
@@ -273,13 +275,19 @@ void GasStatistics::take_sample(const Gas& gas, double time) {
   sample_collisions_ = 0;
   if (!(sample.duration > 0)) return;
   const auto samples = static_cast<double>(blocking_[mean_speed_q].count() + 1);
-  const double batch =
-      std::isfinite(heat_time_) ? heat_time_ / (now.duration / samples) : 1;
-  const auto shortest = static_cast<std::size_t>(std::max(1.0, std::ceil(batch)));
+  const double sample_time = now.duration / samples;  // model time a sample
+  auto in_samples = [sample_time](double batch_time) {
+    const double batch = std::isfinite(batch_time) ? batch_time / sample_time : 1;
+    return static_cast<std::size_t>(std::max(1.0, std::ceil(batch)));
+  };
+  const std::size_t heat_batch = in_samples(heat_time_);
+  const std::size_t speeds_batch = in_samples(speeds_time_);
   for (int q = 0; q < quantity_count; ++q) {
     BlockingAnalysis& blocking = blocking_[static_cast<std::size_t>(q)];
     if (follows_table_heat(static_cast<Quantity>(q)))
-      blocking.set_shortest_batch(shortest);
+      blocking.set_shortest_batch(heat_batch);
+    if (follows_speeds(static_cast<Quantity>(q)))
+      blocking.set_shortest_batch(speeds_batch);
     const double value = value_of(static_cast<Quantity>(q), sample);
     if (std::isfinite(value)) blocking.add(value);
   }
@@ -391,6 +399,7 @@ double GasStatistics::value_of(Quantity q, const Sums& s) const {
 
 bool GasStatistics::follows_table_heat(Quantity q) {
   switch (q) {
+    case mean_speed_q:
     case bulk_z_minus_theory_q:
     case collision_rate_minus_theory_q:
     case pressure_minus_theory_q:
@@ -402,6 +411,10 @@ bool GasStatistics::follows_table_heat(Quantity q) {
     default:
       return true;
   }
+}
+
+bool GasStatistics::follows_speeds(Quantity q) {
+  return q == mean_speed_q;
 }
 
 // Where each quantity goes among the figures (a switch, so that the compiler

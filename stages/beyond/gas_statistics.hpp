@@ -66,9 +66,22 @@ Average average_with_error(const BlockingAnalysis& samples, double scale = 1);
 // warm-up for one ball: nothing relaxes.
 inline constexpr long long fewest_warm_up_collisions = 10;
 long long warm_up_collisions_a_ball(const Gas& gas);
+// The mean speed's shortest batch, in pair collisions per ball. Over 40 gases
+// like data/large-1000.scene (eta = 0.3), and 8 of 1024 balls at 0.1 and
+// 0.5, the autocorrelation of the mean speed over one time unit falls to 1/e
+// in 2 to 4 pair collisions per ball, and to nothing beyond 20 (nothing follows the
+// heat: the error of an average over 100 ... 2600 time units is 2.3 to 2.5
+// times the uncorrelated one at every length). Twenty-five make a batch some
+// ten of those times long, where batch means lose a few per cent of the
+// error.
+inline constexpr double speeds_batch_collisions = 25;
 // The interior: centres at least this many radii from every wall. Density
-// oscillations at a wall die out within a few diameters (lesson 13).
-inline constexpr double interior_margin_radii = 8;
+// oscillations at a wall die out within a few diameters (lesson 13), but
+// what is left of them still lowers the interior's Z measurably at eta =
+// 0.45 with 8 radii (by 0.05 % at N = 1024: the closed box's seeds,
+// data/reports/kinetic-seeds.md); with 12 radii it is within the seeds'
+// errors from eta = 0.1 to 0.45.
+inline constexpr double interior_margin_radii = 12;
 
 // The figures measured since the averages started, as of one moment.
 struct MeasuredFigures {
@@ -193,8 +206,15 @@ class GasStatistics final : public CollisionObserver {
   // Does the quantity wander with the table's heat (measured: its blocking
   // curve still rises past the sound's crossing time), so that its error
   // waits for batches as long as table_heat_time? The differences from
-  // theory, taken sample by sample, do not; nor do the collision rates.
+  // theory, taken sample by sample, do not; nor do the collision rates, nor
+  // the mean speed (the total energy is fixed: only the shape of the speeds'
+  // distribution moves it, and that forgets itself within a few collisions a
+  // ball; lesson 14).
   static bool follows_table_heat(Quantity q);
+  // Does the quantity follow the shape of the speeds' distribution (the mean
+  // speed), so that its error waits for batches of
+  // speeds_batch_collisions pair collisions per ball?
+  static bool follows_speeds(Quantity q);
   static Average& average_of(MeasuredFigures& m, Quantity q);
 
   void start_averages(const Gas& gas);
@@ -227,6 +247,9 @@ class GasStatistics final : public CollisionObserver {
   double bin_width_ = 0;
   long long collisions_per_sample_ = 1;
   double heat_time_ = 0;  // table_heat_time: the shortest batch, in model time
+  // The shortest batch for the mean speed, in model time: speeds_batch_collisions
+  // over Enskog's rate per ball at N / (A1 A2) and the start's kT.
+  double speeds_time_ = 0;
 
   // The state as of the last collision.
   long long collisions_ = 0;        // since this object was made

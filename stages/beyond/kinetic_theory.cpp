@@ -125,6 +125,15 @@ double table_heat_time(const Gas& gas) {
   return wave * wave / diffusivity;
 }
 
+double speeds_batch_time(const Gas& gas) {
+  const std::size_t n = gas.balls.size();
+  const double kT = n > 0 ? kinetic_energy(gas) / static_cast<double>(n) : 0.0;
+  if (n < 2 || !(kT > 0)) return std::numeric_limits<double>::quiet_NaN();
+  const double eta = static_cast<double>(n) * std::numbers::pi * gas.radius * gas.radius /
+                     (gas.width * gas.height);
+  return speeds_batch_collisions / enskog_collision_rate(eta, gas.radius, kT);
+}
+
 KineticTheory kinetic_theory(const Gas& gas) {
   return kinetic_theory(gas, kinetic_energy(gas));
 }

@@ -112,6 +112,13 @@ double fixed_count_rate_factor(double area_fraction, std::size_t balls);
 // or a gas at rest.
 double table_heat_time(const Gas& gas);
 
+// The time a ball takes for speeds_batch_collisions collisions
+// (beyond/gas_statistics.hpp), at Enskog's rate at eta = N pi a^2 / (A1 A2)
+// and kT = E / N: the mean speed's shortest batch (lesson 14), some 28 time
+// units for data/large-1000.scene. NaN for fewer than 2 balls or a gas at
+// rest.
+double speeds_batch_time(const Gas& gas);
+
 // The Henderson equation of state of hard discs and its contact value g(2a),
 // as functions of the area fraction.
 double henderson_compressibility(double area_fraction);
