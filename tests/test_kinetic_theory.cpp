@@ -119,6 +119,17 @@ Measured measure_run(int side, double eta, double length, unsigned seed) {
   return r;
 }
 
+// A time of the table (`time_of`: table_heat_time, say) is not known (NaN)
+// for one ball of `gas`, or for its balls at rest.
+void check_none_for_one_ball_or_rest(double (*time_of)(const Gas&), const Gas& gas) {
+  Gas one = gas;
+  one.balls.resize(1);
+  CHECK(std::isnan(time_of(one)));
+  Gas still = gas;
+  for (gas::Ball& b : still.balls) b.vx = b.vy = 0;
+  CHECK(std::isnan(time_of(still)));
+}
+
 // The Kolmogorov-Smirnov distance between the speeds and 2D Maxwell-
 // Boltzmann at kT.
 double ks_distance(std::vector<double> speeds, double kT) {
@@ -355,13 +366,7 @@ TEST_SUITE("kinetic-theory") {
     // Some 370 time units (kT about 0.54 here).
     CHECK(gas::table_heat_time(gas) > 300);
     CHECK(gas::table_heat_time(gas) < 450);
-    // No heat time for one ball, or for balls at rest.
-    Gas one = gas;
-    one.balls.resize(1);
-    CHECK(std::isnan(gas::table_heat_time(one)));
-    Gas still = gas;
-    for (gas::Ball& b : still.balls) b.vx = b.vy = 0;
-    CHECK(std::isnan(gas::table_heat_time(still)));
+    check_none_for_one_ball_or_rest(gas::table_heat_time, gas);
   }
 
   TEST_CASE(
@@ -375,12 +380,7 @@ TEST_SUITE("kinetic-theory") {
     CHECK(gas::speeds_batch_time(gas) == doctest::Approx(25 / rate).epsilon(1e-12));
     CHECK(gas::speeds_batch_time(gas) > 20);  // some 28 time units
     CHECK(gas::speeds_batch_time(gas) < 40);
-    Gas one = gas;
-    one.balls.resize(1);
-    CHECK(std::isnan(gas::speeds_batch_time(one)));
-    Gas still = gas;
-    for (gas::Ball& b : still.balls) b.vx = b.vy = 0;
-    CHECK(std::isnan(gas::speeds_batch_time(still)));
+    check_none_for_one_ball_or_rest(gas::speeds_batch_time, gas);
   }
 
   TEST_CASE(

@@ -113,25 +113,39 @@ double fixed_count_rate_factor(double area_fraction, std::size_t balls) {
 }
 // [/anchor: fixed-count]
 
-double table_heat_time(const Gas& gas) {
+namespace {
+
+// The state a time of the table is worked out at: eta = N pi a^2 / (A1 A2)
+// and kT = E / N; kT = 0 (no such time) for fewer than 2 balls or a gas at
+// rest.
+struct TableState {
+  double eta = 0, kT = 0;
+};
+
+TableState table_state(const Gas& gas) {
   const std::size_t n = gas.balls.size();
   const double kT = n > 0 ? kinetic_energy(gas) / static_cast<double>(n) : 0.0;
-  if (n < 2 || !(kT > 0)) return std::numeric_limits<double>::quiet_NaN();
-  const double eta = static_cast<double>(n) * std::numbers::pi * gas.radius * gas.radius /
-                     (gas.width * gas.height);
+  if (n < 2 || !(kT > 0)) return {};
+  return {static_cast<double>(n) * std::numbers::pi * gas.radius * gas.radius /
+              (gas.width * gas.height),
+          kT};
+}
+
+}  // namespace
+
+double table_heat_time(const Gas& gas) {
+  const TableState s = table_state(gas);
+  if (!(s.kT > 0)) return std::numeric_limits<double>::quiet_NaN();
   const double diffusivity =
-      enskog_mean_free_path(eta, gas.radius) * std::sqrt(std::numbers::pi * kT / 2);
+      enskog_mean_free_path(s.eta, gas.radius) * std::sqrt(std::numbers::pi * s.kT / 2);
   const double wave = std::max(gas.width, gas.height) / (2 * std::numbers::pi);  // 1 / k
   return wave * wave / diffusivity;
 }
 
 double speeds_batch_time(const Gas& gas) {
-  const std::size_t n = gas.balls.size();
-  const double kT = n > 0 ? kinetic_energy(gas) / static_cast<double>(n) : 0.0;
-  if (n < 2 || !(kT > 0)) return std::numeric_limits<double>::quiet_NaN();
-  const double eta = static_cast<double>(n) * std::numbers::pi * gas.radius * gas.radius /
-                     (gas.width * gas.height);
-  return speeds_batch_collisions / enskog_collision_rate(eta, gas.radius, kT);
+  const TableState s = table_state(gas);
+  if (!(s.kT > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return speeds_batch_collisions / enskog_collision_rate(s.eta, gas.radius, s.kT);
 }
 
 KineticTheory kinetic_theory(const Gas& gas) {
