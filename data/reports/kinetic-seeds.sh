@@ -352,65 +352,86 @@ if has closed; then
   closed_table
 fi
 if has speeds; then
-  echo "## How fast the mean speed forgets"
+  echo "## How fast the figures forget"
   echo
   echo "The spread's $(echo "$spread_seeds" | wc -w) gases to T = $speeds_until, a row every time unit:"
-  echo "the mean speed over each time unit from the averages' start (over"
-  echo "√kT), its autocorrelation over the seeds, and the spread of its average"
-  echo "over the first W time units against independent time units'."
+  echo "each figure over each time unit from the averages' start (the sums"
+  echo "between rows: the mean speed over √kT, η_int, kT_int over kT), its"
+  echo "autocorrelation over the seeds, and the spread over the seeds of its"
+  echo "average over the first W time units against independent time units'"
+  echo "(the ratio: the square root of the statistical inefficiency over W)."
   echo
-  echo "<!-- section: speeds -->"
   for s in $spread_seeds; do echo "$tmp/speeds-$s.csv"; done | xargs awk -F, '
     function num(v) { return (v == "nan" || v == "-nan" || v == "") ? "nan" : v + 0 }
     FNR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; ++runs; have = 0; next }
     {
       since = num($c["averages_since"]); t = $c["T"] - since
       if (since == "nan" || t <= 0) next
-      sum = $c["mean_speed_average"] * t
-      if (have && t - last_t > 0.999 && t - last_t < 1.001) x[runs, ++len[runs]] = sum - last_sum
-      last_t = t; last_sum = sum; have = 1
+      # Running sums: the mean speed, the interior ball-time (as eta t) and
+      # its kinetic energy (as kT_int eta t).
+      speed = $c["mean_speed_average"] * t; inside = $c["eta_interior"] * t
+      energy = $c["kT_interior"] * inside
+      if (have && t - last_t > 0.999 && t - last_t < 1.001) {
+        ++len[runs]
+        x[1, runs, len[runs]] = speed - last_speed
+        x[2, runs, len[runs]] = inside - last_inside
+        x[3, runs, len[runs]] = (energy - last_energy) / (inside - last_inside)
+      }
+      last_t = t; last_speed = speed; last_inside = inside; last_energy = energy; have = 1
       kT[runs] = $c["kT"]; rate[runs] = $c["collision_rate_box"]
     }
     END {
+      split("mean speed|eta_interior|kT_interior", names, "|")
+      split("0.5 0 1", power, " ")
       n = len[1]
       for (r = 1; r <= runs; ++r) if (len[r] < n) n = len[r]
-      for (r = 1; r <= runs; ++r) for (i = 1; i <= n; ++i) { x[r, i] /= sqrt(kT[r]); mean += x[r, i] }
-      mean /= runs * n
-      for (r = 1; r <= runs; ++r) for (i = 1; i <= n; ++i) var += (x[r, i] - mean) ^ 2
-      var /= runs * n
-      for (r = 1; r <= runs; ++r) mean_rate += rate[r] / runs
-      split("1 2 3 5 10 20 50 100 200 400", lags, " ")
-      header = "| lag (time units) |"; rule = "|---|"; row = "| autocorrelation |"
-      for (k = 1; k in lags; ++k) {
-        lag = lags[k]; if (lag >= n) break
-        header = header " " lag " |"; rule = rule "---|"; row = row sprintf(" %.3f |", acf(lag))
+      for (f = 1; f <= 3; ++f) {
+        for (r = 1; r <= runs; ++r) for (i = 1; i <= n; ++i) {
+          x[f, r, i] /= kT[r] ^ power[f]; mean[f] += x[f, r, i] / (runs * n)
+        }
+        for (r = 1; r <= runs; ++r) for (i = 1; i <= n; ++i) var[f] += (x[f, r, i] - mean[f]) ^ 2 / (runs * n)
       }
-      print header; print rule; print row; print ""
+      for (r = 1; r <= runs; ++r) mean_rate += rate[r] / runs
+      split("1 2 3 5 10 20 30 40 50 60 100 200 400", lags, " ")
+      print "<!-- section: speeds -->"
+      header = "| autocorrelation at lag (time units) |"; rule = "|---|"
+      for (k = 1; k in lags; ++k) { header = header " " lags[k] " |"; rule = rule "---|" }
+      print header; print rule
+      for (f = 1; f <= 3; ++f) {
+        row = "| " names[f] " |"
+        for (k = 1; k in lags; ++k) row = row sprintf(" %.3f |", acf(f, lags[k]))
+        print row
+      }
+      print ""
       previous = 1
       for (lag = 1; lag < n; ++lag) {
-        a = acf(lag)
+        a = acf(1, lag)
         if (a < exp(-1)) { fold = lag - 1 + (previous - exp(-1)) / (previous - a); break }
         previous = a
       }
       print "<!-- section: speeds-fold -->"
-      print "| below 1/e after (time units) | pair collisions per ball | rate per ball |"
+      print "| the mean speed: below 1/e after (time units) | pair collisions per ball | rate per ball |"
       print "|---|---|---|"
       printf "| %.1f | %.1f | %.3f |\n\n", fold, fold * mean_rate, mean_rate
       print "<!-- section: speeds-windows -->"
-      print "| W (time units) | spread of the average over W | independent time units | ratio |"
+      print "| W (time units) | mean speed | eta_interior | kT_interior |"
       print "|---|---|---|---|"
-      split("100 270 870", windows, " ")
+      split("30 100 270 870 1300", windows, " ")
       for (k = 1; k in windows; ++k) {
         w = windows[k]; if (w > n) break
-        m = 0; v = 0
-        for (r = 1; r <= runs; ++r) { a_w[r] = 0; for (i = 1; i <= w; ++i) a_w[r] += x[r, i] / w; m += a_w[r] / runs }
-        for (r = 1; r <= runs; ++r) v += (a_w[r] - m) ^ 2 / (runs - 1)
-        printf "| %d | %.3g | %.3g | %.2f |\n", w, sqrt(v), sqrt(var / w), sqrt(v / (var / w))
+        row = sprintf("| %d |", w)
+        for (f = 1; f <= 3; ++f) {
+          m = 0; v = 0
+          for (r = 1; r <= runs; ++r) { a_w[r] = 0; for (i = 1; i <= w; ++i) a_w[r] += x[f, r, i] / w; m += a_w[r] / runs }
+          for (r = 1; r <= runs; ++r) v += (a_w[r] - m) ^ 2 / (runs - 1)
+          row = row sprintf(" %.2f |", sqrt(v / (var[f] / w)))
+        }
+        print row
       }
     }
-    function acf(lag,   r, i, s, m) {
-      for (r = 1; r <= runs; ++r) for (i = 1; i + lag <= n; ++i) { s += (x[r, i] - mean) * (x[r, i + lag] - mean); ++m }
-      return s / m / var
+    function acf(f, lag,   r, i, s, m) {
+      for (r = 1; r <= runs; ++r) for (i = 1; i + lag <= n; ++i) { s += (x[f, r, i] - mean[f]) * (x[f, r, i + lag] - mean[f]); ++m }
+      return s / m / var[f]
     }'
   echo
 fi

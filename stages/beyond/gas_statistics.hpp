@@ -66,14 +66,15 @@ Average average_with_error(const BlockingAnalysis& samples, double scale = 1);
 // warm-up for one ball: nothing relaxes.
 inline constexpr long long fewest_warm_up_collisions = 10;
 long long warm_up_collisions_a_ball(const Gas& gas);
-// The mean speed's shortest batch, in pair collisions per ball. Over 40 gases
-// like data/large-1000.scene (eta = 0.3), and 8 of 1024 balls at 0.1 and
-// 0.5, the autocorrelation of the mean speed over one time unit falls to 1/e
-// in 2 to 4 pair collisions per ball, and to nothing beyond 20 (nothing follows the
-// heat: the error of an average over 100 ... 2600 time units is 2.3 to 2.5
-// times the uncorrelated one at every length). Twenty-five make a batch some
-// ten of those times long, where batch means lose a few per cent of the
-// error.
+// The mean speed's shortest batch, in pair collisions per ball. The
+// autocorrelation of the mean speed over one time unit falls to 1/e in 2.6
+// pair collisions per ball over 40 gases like data/large-1000.scene (eta =
+// 0.3; data/reports/kinetic-seeds.md, section speeds-fold), in 2 to 4 over 8
+// of 1024 balls at 0.1 and 0.5, and to nothing within 20 time units (nothing
+// follows the heat: averages over 30 ... 1300 time units scatter 1.9 to 2.5
+// times as much as uncorrelated ones, section speeds-windows). Twenty-five
+// make a batch some ten of those times long, where batch means lose a few
+// per cent of the error.
 inline constexpr double speeds_batch_collisions = 25;
 // The interior: centres at least this many radii from every wall. Density
 // oscillations at a wall die out within a few diameters (lesson 13), but
