@@ -55,6 +55,17 @@ constexpr double pi = std::numbers::pi;
 // cells of a square table sized for the area fraction `eta` (N pi / A1^2 =
 // eta), every ball at speed 1 in a random direction: a start as far from
 // Maxwell-Boltzmann as one likes (every speed the same).
+// A table `width` x `height` with no balls yet, radius 1; take_step's time
+// limit decides every step.
+Gas bare_table(double width, double height) {
+  Gas g;
+  g.radius = 1;
+  g.width = width;
+  g.height = height;
+  g.display_step = 1e9;
+  return g;
+}
+
 Gas lattice_gas(int side, double eta, unsigned seed) {
   Gas g;
   g.radius = 1;
@@ -369,6 +380,30 @@ TEST_SUITE("kinetic-theory") {
     check_none_for_one_ball_or_rest(gas::table_heat_time, gas);
   }
 
+  TEST_CASE("a table too narrow for an interior: its figures are not known") {
+    // 22 x 60, radius 1: the interior would run from x = 12 to x = 10, so it
+    // is empty, and every figure of it is NaN (not 1 for Z, not infinite for
+    // eta: a flight's time in an empty region is 0, and no time inside, no
+    // figure). The box's own figures are there.
+    Gas g = bare_table(22, 60);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 8; ++j)
+        g.balls.push_back(
+            {5.0 + 6 * i, 5.0 + 7 * j, std::cos(i + 3.0 * j), std::sin(i + 3.0 * j), 0});
+    ObservedRun run(g);
+    const GasStatistics& statistics = run.start_statistics(10);
+    run_until(run.control, 600);
+    const gas::MeasuredFigures m = statistics.measured(run.control.gas);
+    REQUIRE_FALSE(m.warming_up);
+    CHECK(std::isnan(m.interior_area_fraction.value));
+    CHECK(std::isnan(m.interior_kT.value));
+    CHECK(std::isnan(m.bulk_z.value));
+    CHECK(std::isnan(m.collision_rate.value));
+    CHECK(std::isnan(m.mean_free_path.value));
+    CHECK(std::isfinite(m.box_z_virial.value));
+    CHECK(std::isfinite(m.mean_speed.value));
+  }
+
   TEST_CASE(
       "the mean speed's shortest batch: 25 pair collisions per ball at Enskog's rate") {
     // data/large-1000.scene, by hand: rate = 2 (2a) n g(2a) sqrt(pi kT).
@@ -468,11 +503,7 @@ TEST_SUITE("kinetic-theory") {
     // (2 * 38 / 3 and 2 * 28 / 4 = 14; 532 is 21 of the first and 38 of the
     // second) each wall is hit as often as the others of its pair, and
     // Z = 1 to round-off.
-    Gas g;
-    g.radius = 1;
-    g.width = 40;
-    g.height = 30;
-    g.display_step = 1e9;
+    Gas g = bare_table(40, 30);
     g.balls = {{10, 10, 3, 4, 0}};
     ObservedRun run(g);
     Control& control = run.control;

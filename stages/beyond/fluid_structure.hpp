@@ -42,7 +42,8 @@ inline constexpr int contact_bins = 10;
 inline constexpr int contact_fit_degree = 3;
 // How far the curves of --structure reach: g(r) to r = 5a, where it is 1
 // within a few thousandths even at eta = 0.5; n(d) to d = 10a from the
-// wall's limit, 3a into the interior.
+// wall's limit, where the layers have died out (the interior starts at d =
+// 11a).
 inline constexpr double pair_curve_radii = 5;
 inline constexpr double wall_profile_radii = 10;
 

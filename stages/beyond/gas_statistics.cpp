@@ -137,7 +137,8 @@ void GasStatistics::speed_leaves(std::size_t i, double time) {
 double GasStatistics::time_in(const Region& region, const Ball& ball,
                               double until) const {
   const double from = std::max(ball.since, start_);
-  if (!(until > from)) return 0;
+  // (A table too small has an empty interior: no time in it.)
+  if (!(until > from) || region.empty()) return 0;
   double first = 0, last = until - from;  // s, from `from`
   const double x = ball.x + ball.vx * (from - ball.since);
   const double y = ball.y + ball.vy * (from - ball.since);
