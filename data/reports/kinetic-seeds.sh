@@ -6,8 +6,8 @@
 #   bash data/reports/kinetic-seeds.sh [GAS] > data/reports/kinetic-seeds.md
 #   SECTIONS=eos bash data/reports/kinetic-seeds.sh > data/reports/equation-of-state.md
 #
-# Four sections (SECTIONS="theory spread closed", the default, runs three;
-# SECTIONS=eos the fourth); each table follows a line
+# Five sections (SECTIONS="theory spread closed speeds", the default, runs
+# four; SECTIONS=eos the fifth); each table follows a line
 # '<!-- section: NAME -->', which the lessons quote (lessons/README.md, "How
 # the lessons quote"):
 #
