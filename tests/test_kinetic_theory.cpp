@@ -51,10 +51,6 @@ using gas::Gas;
 using gas::GasStatistics;
 constexpr double pi = std::numbers::pi;
 
-// side x side balls of radius 1 on a square lattice, in the middle of the
-// cells of a square table sized for the area fraction `eta` (N pi / A1^2 =
-// eta), every ball at speed 1 in a random direction: a start as far from
-// Maxwell-Boltzmann as one likes (every speed the same).
 // A table `width` x `height` with no balls yet, radius 1; take_step's time
 // limit decides every step.
 Gas bare_table(double width, double height) {
@@ -66,12 +62,14 @@ Gas bare_table(double width, double height) {
   return g;
 }
 
+// side x side balls of radius 1 on a square lattice, in the middle of the
+// cells of a square table sized for the area fraction `eta` (N pi / A1^2 =
+// eta), every ball at speed 1 in a random direction: a start as far from
+// Maxwell-Boltzmann as one likes (every speed the same).
 Gas lattice_gas(int side, double eta, unsigned seed) {
-  Gas g;
-  g.radius = 1;
   const int n = side * side;
-  g.width = g.height = std::sqrt(n * pi / eta);
-  g.display_step = 1e9;  // take_step's time limit decides every step
+  const double length = std::sqrt(n * pi / eta);
+  Gas g = bare_table(length, length);
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> angle(0, 2 * pi);
   const double cell = g.width / side;  // > 2a for eta < pi / 4

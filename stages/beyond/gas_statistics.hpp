@@ -209,8 +209,8 @@ class GasStatistics final : public CollisionObserver {
   // waits for batches as long as table_heat_time? The differences from
   // theory, taken sample by sample, do not; nor do the collision rates, nor
   // the mean speed (the total energy is fixed: only the shape of the speeds'
-  // distribution moves it, and that forgets itself within a few collisions a
-  // ball; lesson 14).
+  // distribution moves it, and that forgets itself within a few pair
+  // collisions per ball; lesson 14).
   static bool follows_table_heat(Quantity q);
   // Does the quantity follow the shape of the speeds' distribution (the mean
   // speed), so that its error waits for batches of
