@@ -44,16 +44,17 @@
 #   should be within 3 of them of zero, and the mean of (Z - Z_open) /
 #   Z_open, Z_open the open bulk's reference at eta_int (Z_theory less
 #   Z_fixed_N_shift), beside the shift the formula predicts.
-# speeds: how fast the mean speed forgets (gas_statistics.hpp,
+# speeds: how fast the figures forget (gas_statistics.hpp,
 #   speeds_batch_collisions; lesson 14): the spread's 40 gases again, to
-#   T = 1500 with a row every time unit; from each run's mean_speed_average
-#   its series over single time units (the sums between rows), scaled by
-#   the seed's sqrt(kT); over the seeds its autocorrelation at lags of 1 to
-#   400 time units, the lag where it falls below 1/e (interpolated) in
-#   time units and in pair collisions per ball (at the gases' mean rate,
-#   collision_rate_box), and the spread over the seeds of the average over
-#   the first W time units against what independent time units would give
-#   (flat in W: no slow part).
+#   T = 1500 with a row every time unit; from each run's mean_speed_average,
+#   eta_interior and kT_interior their series over single time units (the
+#   sums between rows), scaled by the seed's kT to their powers; over the
+#   seeds their autocorrelation at lags of 1 to 400 time units (section
+#   speeds), the mean speed's lag below 1/e (interpolated) in time units and
+#   in pair collisions per ball at the gases' mean rate, collision_rate_box
+#   (speeds-fold), and the spread over the seeds of each average over the
+#   first W time units against what independent time units would give
+#   (speeds-windows: flat in W, no slow part).
 # eos: the equation of state of lesson 13: data/eos-0.1.scene, eos-0.3 and
 #   eos-0.5 (4096 balls on a lattice) to T = 2000, 4000, 2000; the last row
 #   of each --csv: Z, its theory for N balls, their difference sample by

@@ -77,11 +77,11 @@ long long warm_up_collisions_a_ball(const Gas& gas);
 // per cent of the error.
 inline constexpr double speeds_batch_collisions = 25;
 // The interior: centres at least this many radii from every wall. Density
-// oscillations at a wall die out within a few diameters (lesson 13), but
-// what is left of them still lowers the interior's Z measurably at eta =
-// 0.45 with 8 radii (by 0.05 % at N = 1024: the closed box's seeds,
-// data/reports/kinetic-seeds.md); with 12 radii it is within the seeds'
-// errors from eta = 0.1 to 0.45.
+// oscillations at a wall die out within a few diameters (lesson 13); at
+// eta = 0.45 what is left of them 8 radii out still lowers an interior's Z
+// by 0.05 % beyond the 1/N shift at N = 1024, while 12 radii out it is
+// within the closed box's seed errors from eta = 0.1 to 0.45 (lesson 13,
+// "The gas's own N"; data/reports/kinetic-seeds.md, section closed).
 inline constexpr double interior_margin_radii = 12;
 
 // The figures measured since the averages started, as of one moment.
