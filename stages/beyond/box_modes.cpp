@@ -1,0 +1,148 @@
+// The box's sound and heat. See beyond/box_modes.hpp and lessons/14-error-bars.md.
+//
+// The derivation (unit mass, k = 1, 2D: c_v = 1 a ball, c_p = gamma).
+//
+// Waves. The centres move in the box 0 <= u <= L1, 0 <= v <= L2 (u = x - a,
+// L1 = A1 - 2a). The waves phi(u, v) = cos(m pi u / L1) cos(q pi v / L2), k^2
+// = (m pi / L1)^2 + (q pi / L2)^2, have no slope at the walls: nothing flows
+// through a mirror. They are orthogonal, with norm |phi|^2 = integral phi^2
+// = (L1 / 2, or L1 for m = 0) times (L2 / 2, or L2 for q = 0). The wave
+// m = q = 0 is the whole gas, whose count and energy are fixed: it is left
+// out.
+//
+// What each wave holds. Far from the walls, over lengths much longer than a
+// ball, the density's fluctuations are uncorrelated from place to place:
+// <dn(r) dn(r')> = n S(0) delta(r - r'). A wave's amplitude a = integral dn
+// phi / |phi|^2 then has <a^2> = n S(0) / |phi|^2, and the interior's count
+// N_int = integral over the interior of n moves by a P, P = integral over
+// the interior of phi (for the box's mirror symmetry, only even m and q
+// give P != 0; the sum takes them all). The energy's combination that moves
+// kT_int = E_int / N_int is X = de - kT dn (a ball's kinetic energy
+// averages kT in 2D, and hard discs have no other energy): dkT_int =
+// X_int / N_int. Its fluctuations: thermodynamics splits any fluctuation
+// into the pressure's dP, which travels as sound, and the heat's dq = de -
+// h dn (h = kT (1 + Z), the enthalpy a ball), which only spreads; the two
+// are uncorrelated, <dP^2> = n kT c^2 and <dq^2> = n kT^2 c_p per unit area.
+// With dn = dP / c^2 - (alpha_P / c_p) dq (alpha_P = Z / (kT (Z + eta Z')),
+// the expansion at constant pressure) the density's share of heat is 1 -
+// 1 / gamma and of sound 1 / gamma; and X = dq / c_p + (kT Z / c^2) dP holds
+// n kT^2 / gamma of heat and n kT^2 (1 - 1 / gamma) of sound per unit area
+// (both sum to n kT^2 for an ideal gas, where X is a sum of independent v^2
+// / 2 - kT).
+//
+// How each wave forgets. Linear hydrodynamics: the heat part of a wave
+// decays as exp(-D_T k^2 t), the sound part rings as cos(c k t) exp(-Gamma
+// k^2 t). (A small term in sin(c k t), of order Gamma k / c, is left out: it
+// changes the sound's integral by about as much as the sound itself gives,
+// some 1 % of the variance here.)
+//
+// The time average. For a correlation C(t) the average over W has the
+// variance (2 / W^2) integral_0^W (W - t) C(t) dt: for C = exp(-t / tau)
+// that is (2 tau / W)(1 - (tau / W)(1 - exp(-W / tau))), for C = cos(omega
+// t) exp(-alpha t) with s = alpha - i omega the real part of (2 / W^2)(W /
+// s - (1 - exp(-s W)) / s^2). Both tend to 1 (the static variance) as W ->
+// 0 and fall as 1 / W for long runs.
+//
+// Then, over the waves, with pi a^2 / A_int turning a count into an area
+// fraction:
+//   Var(eta_int) = (pi a^2 / A_int)^2 sum n S(0) (P^2 / |phi|^2)
+//                  ((1 - 1/gamma) heat + (1/gamma) sound),
+//   Var(kT_int)  = (n A_int)^-2 sum n kT^2 (P^2 / |phi|^2)
+//                  ((1/gamma) heat + (1 - 1/gamma) sound),
+// heat and sound each the time average's factor above for that wave.
+#include "beyond/box_modes.hpp"
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+namespace gas {
+
+namespace {
+
+constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+constexpr double pi = std::numbers::pi;
+
+// A wave along one side of length `length`: the integral of cos(m pi u / L)
+// over from <= u <= to, and the norm of the wave, integral over 0 ... L of
+// its square.
+struct Side {
+  double projection = 0;
+  double norm = 0;
+};
+Side side_wave(int m, double length, double from, double to) {
+  if (m == 0) return {to - from, length};
+  const double k = m * pi / length;
+  return {(std::sin(k * to) - std::sin(k * from)) / k, length / 2};
+}
+
+// exp(z) - 1 for complex z = x + i y without losing the small ones: the
+// real part expm1(x) cos y - 2 sin^2(y / 2), the imaginary exp(x) sin y.
+std::complex<double> complex_expm1(std::complex<double> z) {
+  const double x = z.real(), y = z.imag();
+  const double half = std::sin(y / 2);
+  return {std::expm1(x) * std::cos(y) - 2 * half * half, std::exp(x) * std::sin(y)};
+}
+
+}  // namespace
+
+// [anchor: averaged-decay]
+double averaged_decay(double tau, double duration) {
+  const double x = duration / tau;
+  // (2 / x)(1 - (1 - exp(-x)) / x), with 1 - exp(-x) = -expm1(-x).
+  return (2 / x) * (1 + std::expm1(-x) / x);
+}
+
+double averaged_ringing(double alpha, double omega, double duration) {
+  const std::complex<double> s(alpha, -omega);
+  const double w = duration;
+  const std::complex<double> integral = w / s + complex_expm1(-s * w) / (s * s);
+  return 2 * integral.real() / (w * w);
+}
+// [/anchor: averaged-decay]
+
+// [anchor: interior-wander]
+InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, double width,
+                               double height, const Region& interior, double duration,
+                               double max_wave_number) {
+  InteriorWander wander;
+  const double side1 = width - 2 * radius, side2 = height - 2 * radius;  // L1, L2
+  if (interior.empty() || !(duration > 0) || !(side1 > 0 && side2 > 0)) return wander;
+  if (!(fluid.thermal_diffusivity > 0 && fluid.sound_speed > 0 &&
+        fluid.sound_attenuation > 0 && fluid.heat_capacity_ratio > 0))
+    return wander;
+  const double k_max = max_wave_number > 0 ? max_wave_number : 1 / radius;
+  // The interior in the centres' box.
+  const double u0 = interior.x_min - radius, u1 = interior.x_max - radius;
+  const double v0 = interior.y_min - radius, v1 = interior.y_max - radius;
+  const double heat_share = 1 - 1 / fluid.heat_capacity_ratio;  // of the density
+  double count = 0, energy = 0;  // Var(N_int) and Var(X_int) of the averages
+  const int m_max = static_cast<int>(k_max * side1 / pi);
+  const int q_max = static_cast<int>(k_max * side2 / pi);
+  for (int m = 0; m <= m_max; ++m) {
+    const Side along_x = side_wave(m, side1, u0, u1);
+    for (int q = 0; q <= q_max; ++q) {
+      if (m == 0 && q == 0) continue;  // the whole gas: fixed
+      const double k2 = std::pow(m * pi / side1, 2) + std::pow(q * pi / side2, 2);
+      if (k2 > k_max * k_max) break;
+      const Side along_y = side_wave(q, side2, v0, v1);
+      const double weight = std::pow(along_x.projection * along_y.projection, 2) /
+                            (along_x.norm * along_y.norm);  // P^2 / |phi|^2
+      // Find how much of each part the average over W keeps.
+      const double heat = averaged_decay(1 / (fluid.thermal_diffusivity * k2), duration);
+      const double sound = averaged_ringing(fluid.sound_attenuation * k2,
+                                            fluid.sound_speed * std::sqrt(k2), duration);
+      count += weight * ((heat_share * heat) + (1 - heat_share) * sound);
+      energy += weight * ((1 - heat_share) * heat + heat_share * sound);
+    }
+  }
+  const double n = fluid.density;
+  const double area = interior.area();
+  wander.area_fraction =
+      pi * radius * radius / area * std::sqrt(n * fluid.structure_factor * count);
+  wander.kT = std::sqrt(n * fluid.kT * fluid.kT * energy) / (n * area);
+  return wander;
+}
+// [/anchor: interior-wander]
+
+}  // namespace gas
