@@ -34,7 +34,9 @@
 #include <vector>
 
 #include "beyond/boltzmann_h.hpp"
+#include "beyond/box_modes.hpp"
 #include "beyond/display_steps.hpp"
+#include "beyond/enskog_transport.hpp"
 #include "beyond/gas_statistics.hpp"
 #include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
@@ -446,6 +448,67 @@ TEST_SUITE("kinetic-theory") {
     CAPTURE(later.mean_speed.status);
     CHECK(std::isfinite(later.mean_speed.error));
     CHECK(later.interior_area_fraction.status == gas::ErrorStatus::short_batches);
+  }
+
+  TEST_CASE(
+      "the interior's slow figures: errors from the box's heat and sound, then from "
+      "the batches") {
+    // data/large-1000.scene after 250 time units of averages: the batches are
+    // far shorter than the table's heat time, so eta_int, kT_int and Z take
+    // their errors from the box's waves (beyond/box_modes.hpp) over the time
+    // averaged, at the interior's measured eta and the gas's kT, and Z's
+    // adds dZ/deta times eta_int's to its difference from the reference's
+    // own. Computed again here from those inputs, the same sum gives the
+    // same numbers to rounding (1e-12).
+    ObservedRun run(gas::read_scene_file(GAS_SOURCE_DIR "/data/large-1000.scene"));
+    Control& control = run.control;
+    const GasStatistics& statistics = run.start_statistics(10);
+    run_until(control, 150);
+    const double since = statistics.measured(control.gas).since;
+    run_until(control, since + 250);
+    const gas::MeasuredFigures m = statistics.measured(control.gas);
+    const Gas& g = control.gas;
+    REQUIRE(m.interior_area_fraction.status == gas::ErrorStatus::short_batches);
+    CHECK(m.interior_area_fraction.from_box_theory);
+    CHECK(m.interior_kT.from_box_theory);
+    CHECK(m.bulk_z.from_box_theory);
+    const double eta = m.interior_area_fraction.value;
+    const double kT = gas::kinetic_energy(g) / static_cast<double>(g.balls.size());
+    const gas::EnskogTransport e = gas::enskog_transport(eta, g.radius, kT);
+    gas::BoxHydrodynamics fluid;
+    fluid.density = eta / (std::numbers::pi * g.radius * g.radius);
+    fluid.kT = kT;
+    const double slope = gas::hard_disc_fluid_compressibility_slope(eta);
+    fluid.structure_factor = 1 / (gas::hard_disc_fluid_compressibility(eta) + eta * slope);
+    fluid.heat_capacity_ratio = e.heat_capacity_ratio;
+    fluid.sound_speed = e.sound_speed;
+    fluid.thermal_diffusivity = e.thermal_diffusivity;
+    fluid.sound_attenuation = e.sound_attenuation;
+    const double margin = gas::interior_margin_radii * g.radius;
+    const gas::Region interior{margin, g.width - margin, margin, g.height - margin};
+    const gas::InteriorWander wander =
+        gas::interior_wander(fluid, g.radius, g.width, g.height, interior, m.duration);
+    CHECK(m.interior_area_fraction.error ==
+          doctest::Approx(wander.area_fraction).epsilon(1e-12));
+    CHECK(m.interior_kT.error == doctest::Approx(wander.kT).epsilon(1e-12));
+    REQUIRE(std::isfinite(m.bulk_z_minus_theory.error));
+    CHECK(m.bulk_z.error ==
+          doctest::Approx(std::hypot(slope * wander.area_fraction,
+                                     m.bulk_z_minus_theory.error))
+              .epsilon(1e-12));
+    // A table of 256 balls, whose heat time is short: once 16 batches that
+    // long fit, the batches' own error stands and the theory steps back.
+    ObservedRun small(lattice_gas(16, 0.3, 5));
+    const GasStatistics& small_statistics = small.start_statistics(10);
+    const double heat = gas::table_heat_time(small.control.gas);
+    run_until(small.control, 150);
+    const double small_since = small_statistics.measured(small.control.gas).since;
+    run_until(small.control, small_since + 2 * 16 * heat);
+    const gas::MeasuredFigures late = small_statistics.measured(small.control.gas);
+    CAPTURE(late.interior_area_fraction.status);
+    CHECK(late.interior_area_fraction.status != gas::ErrorStatus::short_batches);
+    CHECK_FALSE(late.interior_area_fraction.from_box_theory);
+    CHECK_FALSE(late.bulk_z.from_box_theory);
   }
 
   TEST_CASE(

@@ -8,7 +8,10 @@
 #include <stdexcept>
 
 #include "beyond/boltzmann_h.hpp"
+#include "beyond/box_modes.hpp"
+#include "beyond/enskog_transport.hpp"
 #include "beyond/fluid_structure.hpp"
+#include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
 
 namespace gas {
@@ -477,6 +480,43 @@ Average average_with_error(const BlockingAnalysis& samples, double scale) {
   return average;
 }
 
+// [anchor: box-theory-errors]
+// The slow figures of the interior wander with the box's longest waves of
+// heat and sound, which the batches cannot see until they are as long as
+// the table's heat time (blocking.hpp, rule 2). Until then their errors are
+// linear hydrodynamics' for the time averaged so far, at the interior's own
+// eta and the gas's kT, with Enskog's transport (beyond/box_modes.hpp).
+// Z follows eta_int (Z - Z_ref(eta_int) forgets within a few collisions a
+// ball): its error is dZ/deta times eta_int's, beside that difference's
+// own. Once the batches are long enough, or if the test sees them
+// correlated, the blocking rule speaks again.
+void GasStatistics::add_box_theory(MeasuredFigures& m) const {
+  const double eta = m.interior_area_fraction.value;
+  const EnskogTransport e = enskog_transport(eta, radius_, kT_);
+  BoxHydrodynamics fluid;
+  fluid.density = e.density;
+  fluid.kT = kT_;
+  fluid.structure_factor = 1 / (hard_disc_fluid_compressibility(eta) +
+                                eta * hard_disc_fluid_compressibility_slope(eta));
+  fluid.heat_capacity_ratio = e.heat_capacity_ratio;
+  fluid.sound_speed = e.sound_speed;
+  fluid.thermal_diffusivity = e.thermal_diffusivity;
+  fluid.sound_attenuation = e.sound_attenuation;
+  const InteriorWander wander = interior_wander(fluid, radius_, width_ + 2 * radius_,
+                                                height_ + 2 * radius_, interior_, m.duration);
+  auto take = [](Average& average, double error) {
+    if (average.status != ErrorStatus::short_batches || !std::isfinite(error)) return;
+    average.error = error;
+    average.why_no_error = nullptr;
+    average.from_box_theory = true;
+  };
+  take(m.interior_area_fraction, wander.area_fraction);
+  take(m.interior_kT, wander.kT);
+  const double slope = hard_disc_fluid_compressibility_slope(eta);
+  take(m.bulk_z, std::hypot(slope * wander.area_fraction, m.bulk_z_minus_theory.error));
+}
+// [/anchor: box-theory-errors]
+
 MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   MeasuredFigures m;
   // H of the speeds now: from the histogram's counts.
@@ -497,6 +537,7 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
     average = average_with_error(blocking_[static_cast<std::size_t>(q)]);
     average.value = value_of(static_cast<Quantity>(q), s);
   }
+  add_box_theory(m);
   // The snapshots' averages.
   m.pair_contact = average_with_error(structure_.pair_contact());
   m.pair_contact_minus_theory =

@@ -34,8 +34,10 @@ namespace gas {
 inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 
 // A time average and its statistical error (one standard error, from a
-// blocking analysis); the error is not known (NaN) until the analysis finds
-// it, the value not known before the averages start. While the error is
+// blocking analysis, or for the interior's slow figures from the box's heat
+// and sound until the batches are long enough: from_box_theory); the error
+// is not known (NaN) until one of them gives it, the value not known before
+// the averages start. While the error is
 // blank, `why_no_error` may say why in a few words, which the statistics
 // screen shows in its place: "few samples" (fewer than the blocking's 16),
 // "not yet" (its batches are shorter than the table's heat time, or still
@@ -49,6 +51,9 @@ struct Average {
   // What the batches alone would claim (BlockingAnalysis::batch_error): the
   // error once it is known; before, a figure too short to trust.
   double batch_error = not_known;
+  // The error is the box's heat and sound's (beyond/box_modes.hpp), not the
+  // batches': they are still shorter than the table's heat time.
+  bool from_box_theory = false;
 };
 
 // The mean of `samples` times `scale`, with its error by the blocking rule,
@@ -219,6 +224,9 @@ class GasStatistics final : public CollisionObserver {
   static Average& average_of(MeasuredFigures& m, Quantity q);
 
   void start_averages(const Gas& gas);
+  // The interior's eta and kT, and Z, while their batches are short: their
+  // errors from the box's heat and sound over the time averaged (lesson 14).
+  void add_box_theory(MeasuredFigures& m) const;
   // Closes a sample for the error bars at `time` (every N collisions).
   void take_sample(const Gas& gas, double time);
   Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress

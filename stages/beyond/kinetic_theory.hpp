@@ -100,14 +100,15 @@ double fixed_count_compressibility(double area_fraction, std::size_t balls);
 // The factor 1 + dZ / (Z - 1) on Enskog's rate (1 - 1 / N at eta = 0).
 double fixed_count_rate_factor(double area_fraction, std::size_t balls);
 
-// The time heat takes to even out between the middle of the table and its
-// edges: the relaxation time 1 / (D k^2) of the heat mode of wavelength L,
-// the table's longer side (k = 2 pi / L; the longest, k = pi / L, is odd
-// and leaves the middle's average alone), with kinetic theory's estimate of
-// the heat's diffusivity D = lambda <v> (lambda: Enskog's mean free path at
-// eta = N pi a^2 / (A1 A2), <v> = sqrt(pi kT / 2)). How long a figure of
-// the box must be averaged before its own samples can tell its error
-// (beyond/blocking.hpp, rule 2; lesson 14): some 370 time units for
+// How long a figure of the box must be averaged before its own samples can
+// tell its error (beyond/blocking.hpp, rule 2; lesson 14): 1 / (D k^2) for
+// the heat mode of wavelength L, the table's longer side (k = 2 pi / L; the
+// longest, k = pi / L, is odd and leaves the middle's average alone), with
+// D = lambda <v> (lambda: Enskog's mean free path at eta = N pi a^2 / (A1
+// A2), <v> = sqrt(pi kT / 2)). That D is a rough one, some 4.5 times below
+// Enskog's thermal diffusivity D_T at eta = 0.3 (beyond/enskog_transport.hpp):
+// so this is 4 to 5 relaxation times of that heat mode, and batches that
+// long hold (lesson 14 measures it). Some 370 time units for
 // data/large-1000.scene, 3000 for large-10000. NaN for fewer than 2 balls
 // or a gas at rest.
 double table_heat_time(const Gas& gas);
