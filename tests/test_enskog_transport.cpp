@@ -13,6 +13,13 @@
 //   virial pressure, the stress handed across contact (the transfer factor),
 //   the drive of the shear distortion (the same factor), and the stress of
 //   a compressed or sheared flow across contact (kappa_E, kappa_E d/(d+2)).
+// - Heat, from the same rule: the relaxation of Sonine's heat function (the
+//   dilute lambda_0), the energy handed across contact by the distorted
+//   distribution over its own flux and Enskog's extra drive (the transfer
+//   factor t), the energy handed down a temperature difference across contact
+//   (lambda_c), and in 3D Chapman and Cowling's bracket; c_p, D_T and the
+//   damping of sound against their formulas and against the sound root of the
+//   linearised equations.
 // - tau_E is Enskog's mean free time in 2D (two formulas, two files);
 //   nu_E -> D_E in the dilute limit; the sound speed is the slope of the
 //   pressure along an adiabat, by finite differences.
