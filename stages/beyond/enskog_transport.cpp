@@ -91,6 +91,64 @@
 // The sound speed. P = n kT Z(eta), the energy kT a ball (2D): at fixed
 // entropy dT/dn = T Z / n, so dP/dn = kT (Z + eta Z') + n k Z T Z / n, and
 // c^2 = kT (Z + eta Z' + Z^2) (2 kT in the dilute limit: c_p / c_v = 2).
+//
+// The heat capacity. Per ball c_v = 1 (2D), and c_p - c_v = T (dP/dT)_n^2 /
+// (n^2 (dP/dn)_T) with (dP/dT)_n = n Z, (dP/dn)_T = kT (Z + eta Z'):
+//   c_p = 1 + Z^2 / (Z + eta Z'),   gamma = c_p / c_v = c_p
+// (c^2 = gamma (dP/dn)_T, the sound speed above; 2 in the dilute limit).
+//
+// The thermal conductivity lambda_E, first Sonine approximation (a gradient
+// dT/dx distorts the Maxwellian by a psi alone, kT = 1 and dT/dx = 1 in what
+// follows, psi = (v^2 / 2 - (d + 2) / 2) v_x). <psi^2> = (d + 2) / 2 and
+// <v_x psi> = 0, so the heat flux of the distortion is n a <(v^2 / 2) v_x psi>
+// = n a <psi^2>. Three parts again:
+//  - The dilute gas: streaming drives the distortion by v_x (v^2 / 2 - d / 2)
+//    (d ln f0 / dT at fixed n), the pressure gradient's pull by -v_x Z; with
+//    Z = 1 the drive is psi. Collisions relax <psi> at nu_h = <psi L psi> /
+//    <psi^2>, so a = -1 / nu_h and lambda_0 = n <psi^2> / nu_h. A collision
+//    keeps the pair's mean velocity V and |w|, w = v1 - v2, and psi1 + psi2
+//    = 2 V_x (V^2 / 2 + w^2 / 8 - (d + 2) / 2) + (V.w) w_x / 2; so it changes
+//    by V.(M e_x) / 2, and v_x v_y by M_xy / 2, M = w' w' - w w, one traceless
+//    tensor. Over V (variance 1/2) and directions (isotropy) the first square
+//    is (d - 1)(d + 2) / (2 d) times the second, whence nu_h = ((d - 1) / d)
+//    nu_s (any force law) and lambda_0 = (d (d + 2) / (2 (d - 1))) eta_0 (k /
+//    m): 4 eta_0 = (2 / s) sqrt(kT / pi) in 2D, (75 / 64) sqrt(kT / pi) / s^2
+//    in 3D.
+//  - Transfer across contact: a collision hands ball 2 the energy (w.e)(V.e)
+//    across s e. Over V, (V.e)(psi1 + psi2) = e_x (w^2 / 8 - (d + 2) / 4) +
+//    (w.e) w_x / 4; against (w.e)^2 over w (Maxwellian, variance 2) the first
+//    term averages to 0 and the second to 3 e_x^2 / 2. So (pairs counted from
+//    both ends, half) the collisional flux is t times the kinetic one,
+//      t = 3 Omega_d n g s^d / (2 d (d + 2)) = 3 2^(d-1) phi g / (d + 2),
+//    (3 / 2) eta g in 2D, (3 / 5) b n g in 3D (b n = 4 phi): 3/2 of the
+//    viscosity's. Enskog's collision term, with the partner's Maxwellian at
+//    T + s e_x (and T - s e_x in the restoring collision), adds to the drive
+//    a v_x part that cancels the pull's Z - 1 (collisions keep momentum) and
+//    a psi part that the suite finds to be t psi, as for the viscosity. So
+//    the kinetic part is lambda_k = (lambda_0 / g)(1 + t) and the transferred
+//    part t lambda_k.
+//  - The temperature difference across contact: the undistorted pair
+//    straddling a plane, ball 1 at T - s e_x / 2 and ball 2 at T + s e_x / 2,
+//    is weighed by 1 + (s e_x / 2)(v2^2 - v1^2) / 2 = 1 - (s e_x / 2)(V.w), and
+//    over V (V.e)(V.w) = (w.e) / 2; with <(w.e)_+^3> = 4 / sqrt(pi) the energy
+//    handed down the gradient is
+//      lambda_c = Omega_d n^2 g s^(d+1) sqrt(kT / pi) / (2 d) = (d / 2) kappa_E,
+//    (pi / 2) n^2 g s^3 sqrt(kT / pi) in 2D, kappa_E itself.
+// Together, in 2D (lambda_c = (4 / pi) eta^2 g lambda_0),
+//   lambda_E = (lambda_0 / g)(1 + 3 eta g / 2)^2 + lambda_c
+//            = lambda_0 (1 / g + 3 eta + (9 / 4 + 4 / pi) eta^2 g),
+// and at d = 3 lambda_0 (1 / g + (6 / 5) b n + (9 / 25 + 32 / (25 pi)) (b n)^2
+// g), the form we remember from Chapman and Cowling (not read).
+//
+// Heat diffuses at D_T = lambda_E / (n c_p) (at constant pressure). A sound
+// wave exp(i (k x - w t)) of the linearised equations (dn/dt = -n du/dx, n du/dt
+// = -dP/dx + n nu_l d^2u/dx^2, n c_v dT/dt = -T (dP/dT)_n du/dx + lambda_E
+// d^2T/dx^2) has, to order k^2, w = c k - i Gamma k^2 with
+//   Gamma = (nu_l + (gamma - 1) D_T) / 2,  nu_l = (2 (d - 1) / d eta_E + kappa_E) / n
+// (the stress of a compression along x: eta_E (2 - 2 / d) + kappa_E), in 2D
+// nu_l = (eta_E + kappa_E) / n: the sound root of the cubic in w, expanded
+// about c k (the suite finds the root numerically at small k). A sound wave
+// of wave number k decays as exp(-Gamma k^2 t).
 #include "beyond/enskog_transport.hpp"
 
 #include <cmath>
@@ -113,7 +171,8 @@ EnskogTransport enskog_transport(double area_fraction, double radius, double kT)
   if (!(eta > 0 && eta <= fluid_area_fraction_limit)) {
     e.density = e.contact_value = e.velocity_time = e.diffusion = unknown;
     e.shear_viscosity = e.bulk_viscosity = e.kinematic_viscosity = unknown;
-    e.sound_speed = unknown;
+    e.sound_speed = e.heat_capacity = e.heat_capacity_ratio = unknown;
+    e.thermal_conductivity = e.thermal_diffusivity = e.sound_attenuation = unknown;
     e.tail_coefficient = unknown;
     return e;
   }
@@ -133,6 +192,26 @@ EnskogTransport enskog_transport(double area_fraction, double radius, double kT)
   e.shear_viscosity = kinetic_viscosity * (1 + transfer) + e.bulk_viscosity / 2;
   e.kinematic_viscosity = e.shear_viscosity / n;
   e.sound_speed = hard_disc_sound_speed(eta, kT);
+  // Heat: c_p = 1 + Z^2 / (Z + eta Z'), gamma = c_p / c_v with c_v = 1.
+  const double z = hard_disc_fluid_compressibility(eta);
+  const double slope = hard_disc_fluid_compressibility_slope(eta);
+  e.heat_capacity = 1 + z * z / (z + eta * slope);
+  e.heat_capacity_ratio = e.heat_capacity;  // over c_v = 1
+  // lambda_0 = 4 eta_0, the transfer factor 3 eta g / 2, and lambda_c =
+  // (pi / 2) n^2 g s^3 sqrt(kT / pi) from the temperature difference across
+  // contact (in 2D the same number as kappa_E).
+  const double dilute_conductivity = 4 * dilute_viscosity;
+  const double heat_transfer = 1.5 * eta * g;
+  const double contact_conductivity =
+      (pi / 2) * n * n * g * s * s * s * std::sqrt(kT / pi);
+  e.thermal_conductivity =
+      dilute_conductivity / g * (1 + heat_transfer) * (1 + heat_transfer) +
+      contact_conductivity;
+  e.thermal_diffusivity = e.thermal_conductivity / (n * e.heat_capacity);
+  // Sound decays at Gamma = (nu_l + (gamma - 1) D_T) / 2, nu_l = (eta_E + kappa_E) / n.
+  const double longitudinal = (e.shear_viscosity + e.bulk_viscosity) / n;
+  e.sound_attenuation =
+      (longitudinal + (e.heat_capacity_ratio - 1) * e.thermal_diffusivity) / 2;
   // Mode coupling: rho(t) = 1 / (8 pi n (D + nu) t).
   e.tail_coefficient = 1 / (8 * pi * n * (e.diffusion + e.kinematic_viscosity));
   return e;

@@ -6,7 +6,9 @@
 // compared with (beyond/velocity_autocorrelation.hpp): Enskog's decay time
 // tau_E of a ball's velocity, the diffusion coefficient D_E = kT tau_E, the
 // shear and bulk viscosities and the kinematic viscosity nu_E, the speed of
-// sound, and the mode-coupling tail rho(t) = 1 / (8 pi n (D_E + nu_E) t).
+// sound, the heat capacity c_p and the ratio c_p / c_v, the thermal
+// conductivity lambda_E and diffusivity D_T, the damping of sound, and the
+// mode-coupling tail rho(t) = 1 / (8 pi n (D_E + nu_E) t).
 // Every formula is derived in enskog_transport.cpp (and in the lesson); the
 // suite computes each coefficient again from the collision rule itself, by
 // Monte Carlo integration in two and three dimensions
@@ -36,6 +38,15 @@ struct EnskogTransport {
   double bulk_viscosity = 0;       // kappa_E, the same unit
   double kinematic_viscosity = 0;  // nu_E = eta_E / n (unit mass), area per unit time
   double sound_speed = 0;          // c, adiabatic, length per unit time
+  double heat_capacity = 0;        // c_p per ball at constant pressure, in units of k
+  double heat_capacity_ratio = 0;  // gamma = c_p / c_v (c_v = 1 in 2D), no unit
+  // lambda_E: the heat flux (energy per unit length and time) per unit
+  // temperature gradient, in units of k per unit time (2D, k = 1).
+  double thermal_conductivity = 0;
+  double thermal_diffusivity = 0;  // D_T = lambda_E / (n c_p), area per unit time
+  // Gamma: a sound wave of wave number k decays as exp(-Gamma k^2 t); area
+  // per unit time.
+  double sound_attenuation = 0;
   // The mode-coupling tail rho(t) = tail_coefficient / t (a time).
   double tail_coefficient = 0;
 
