@@ -151,3 +151,17 @@ TEST_CASE(
   still.thermal_diffusivity = 0;
   CHECK(std::isnan(gas::interior_wander(still, 1, 22, 17, {6, 16, 5, 12}, 100).kT));
 }
+
+TEST_CASE("box modes: the run's batches take the place of the theory's short part") {
+  // Batches that say what the theory expects of them leave the theory's
+  // error as it is; batches that see more add the difference to its square.
+  const double whole = 0.02, one = 0.09, all = 0.021, n = 20;
+  const double expected = std::sqrt((one * one - all * all) / (n - 1));
+  CHECK(gas::corrected_by_batches(whole, one, all, n, expected) ==
+        doctest::Approx(whole).epsilon(1e-14));
+  const double more = 1.5 * expected;
+  CHECK(gas::corrected_by_batches(whole, one, all, n, more) ==
+        doctest::Approx(std::sqrt(whole * whole + more * more - expected * expected))
+            .epsilon(1e-14));
+  CHECK(std::isnan(gas::corrected_by_batches(whole, one, all, 1, expected)));
+}

@@ -453,19 +453,20 @@ TEST_SUITE("kinetic-theory") {
   TEST_CASE(
       "the interior's slow figures: errors from the box's heat and sound, then from "
       "the batches") {
-    // data/large-1000.scene after 250 time units of averages: the batches are
+    // data/large-1000.scene after 263 time units of averages: the batches are
     // far shorter than the table's heat time, so eta_int, kT_int and Z take
     // their errors from the box's waves (beyond/box_modes.hpp) over the time
     // averaged, at the interior's measured eta and the gas's kT, and Z's
     // adds dZ/deta times eta_int's to its difference from the reference's
-    // own. Computed again here from those inputs, the same sum gives the
-    // same numbers to rounding (1e-12).
+    // own; the short part of each is what the run's batches say
+    // (corrected_by_batches). Computed again here from those inputs, the
+    // same sums give the same numbers to rounding (1e-12).
     ObservedRun run(gas::read_scene_file(GAS_SOURCE_DIR "/data/large-1000.scene"));
     Control& control = run.control;
     const GasStatistics& statistics = run.start_statistics(10);
     run_until(control, 150);
     const double since = statistics.measured(control.gas).since;
-    run_until(control, since + 250);
+    run_until(control, since + 263);
     const gas::MeasuredFigures m = statistics.measured(control.gas);
     const Gas& g = control.gas;
     REQUIRE(m.interior_area_fraction.status == gas::ErrorStatus::short_batches);
@@ -479,23 +480,40 @@ TEST_SUITE("kinetic-theory") {
     fluid.density = eta / (std::numbers::pi * g.radius * g.radius);
     fluid.kT = kT;
     const double slope = gas::hard_disc_fluid_compressibility_slope(eta);
-    fluid.structure_factor = 1 / (gas::hard_disc_fluid_compressibility(eta) + eta * slope);
+    fluid.structure_factor =
+        1 / (gas::hard_disc_fluid_compressibility(eta) + eta * slope);
     fluid.heat_capacity_ratio = e.heat_capacity_ratio;
     fluid.sound_speed = e.sound_speed;
     fluid.thermal_diffusivity = e.thermal_diffusivity;
     fluid.sound_attenuation = e.sound_attenuation;
     const double margin = gas::interior_margin_radii * g.radius;
     const gas::Region interior{margin, g.width - margin, margin, g.height - margin};
-    const gas::InteriorWander wander =
-        gas::interior_wander(fluid, g.radius, g.width, g.height, interior, m.duration);
-    CHECK(m.interior_area_fraction.error ==
-          doctest::Approx(wander.area_fraction).epsilon(1e-12));
-    CHECK(m.interior_kT.error == doctest::Approx(wander.kT).epsilon(1e-12));
+    auto wander = [&](double duration) {
+      return gas::interior_wander(fluid, g.radius, g.width, g.height, interior, duration);
+    };
+    const gas::Average& eta_int = m.interior_area_fraction;
+    REQUIRE(eta_int.batches >= 16);
+    const gas::InteriorWander whole = wander(m.duration),
+                              one = wander(eta_int.batch_time),
+                              all = wander(eta_int.batches * eta_int.batch_time);
+    const double eta_error = gas::corrected_by_batches(
+        whole.area_fraction, one.area_fraction, all.area_fraction, eta_int.batches,
+        eta_int.batch_error);
+    CHECK(eta_int.error == doctest::Approx(eta_error).epsilon(1e-12));
+    CHECK(m.interior_kT.error ==
+          doctest::Approx(gas::corrected_by_batches(whole.kT, one.kT, all.kT,
+                                                    eta_int.batches,
+                                                    m.interior_kT.batch_error))
+              .epsilon(1e-12));
     REQUIRE(std::isfinite(m.bulk_z_minus_theory.error));
     CHECK(m.bulk_z.error ==
-          doctest::Approx(std::hypot(slope * wander.area_fraction,
-                                     m.bulk_z_minus_theory.error))
+          doctest::Approx(std::hypot(slope * eta_error, m.bulk_z_minus_theory.error))
               .epsilon(1e-12));
+    // The batches behind batch_error: 16 to 31 of them, filling the time
+    // averaged but for less than one batch.
+    CHECK(eta_int.batches <= 31);
+    CHECK(eta_int.batches * eta_int.batch_time <= m.duration * (1 + 1e-12));
+    CHECK((eta_int.batches + 1) * eta_int.batch_time > m.duration);
     // A table of 256 balls, whose heat time is short: once 16 batches that
     // long fit, the batches' own error stands and the theory steps back.
     ObservedRun small(lattice_gas(16, 0.3, 5));

@@ -101,6 +101,14 @@ double averaged_ringing(double alpha, double omega, double duration) {
 }
 // [/anchor: averaged-decay]
 
+double corrected_by_batches(double theory_whole, double theory_batch,
+                            double theory_batches, double batches, double batch_error) {
+  if (!(batches >= 2)) return unknown;
+  const double expected =
+      (theory_batch * theory_batch - theory_batches * theory_batches) / (batches - 1);
+  return std::sqrt(theory_whole * theory_whole + batch_error * batch_error - expected);
+}
+
 // [anchor: interior-wander]
 InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, double width,
                                double height, const Region& interior, double duration,

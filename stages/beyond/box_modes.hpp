@@ -61,6 +61,18 @@ InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, dou
                                double height, const Region& interior, double duration,
                                double max_wave_number = 0);
 
+// The theory's standard error over W with its short part replaced by the
+// run's own: hydrodynamics is right for the slow waves and short of the
+// truth within a free time or two, which the run's batches do see. With n
+// batches of length b whose means give batch_error, and the theory's errors
+// over W, over b and over n b,
+//   error^2 = theory(W)^2 + batch_error^2 - (theory(b)^2 - theory(n b)^2) / (n - 1),
+// the last term being what the theory expects batch_error^2 to be (the
+// batch means' sample variance over n: the variance of one, less the part
+// common to all). NaN for fewer than 2 batches.
+double corrected_by_batches(double theory_whole, double theory_batch,
+                            double theory_batches, double batches, double batch_error);
+
 // The variance of the time average over W of a correlation exp(-t / tau), in
 // units of its value at t = 0: (2 / W^2) integral_0^W (W - t) exp(-t / tau) dt.
 double averaged_decay(double tau, double duration);

@@ -483,13 +483,15 @@ Average average_with_error(const BlockingAnalysis& samples, double scale) {
 // [anchor: box-theory-errors]
 // The slow figures of the interior wander with the box's longest waves of
 // heat and sound, which the batches cannot see until they are as long as
-// the table's heat time (blocking.hpp, rule 2). Until then their errors are
-// linear hydrodynamics' for the time averaged so far, at the interior's own
-// eta and the gas's kT, with Enskog's transport (beyond/box_modes.hpp).
-// Z follows eta_int (Z - Z_ref(eta_int) forgets within a few collisions a
-// ball): its error is dZ/deta times eta_int's, beside that difference's
-// own. Once the batches are long enough, or if the test sees them
-// correlated, the blocking rule speaks again.
+// the table's heat time (blocking.hpp, rule 2). Until then their errors
+// come from linear hydrodynamics at the interior's own eta and the gas's
+// kT, with Enskog's transport (beyond/box_modes.hpp), over the time
+// averaged, its short part replaced by what the run's own batches see
+// (corrected_by_batches: hydrodynamics is short of the truth within a free
+// time or two, where the balls do not yet move as a fluid). Z follows eta_int (Z -
+// Z_ref(eta_int) forgets within a few collisions a ball): its error is dZ/deta times
+// eta_int's, beside that difference's own. Once the batches are long
+// enough, or if the test sees them correlated, the blocking rule speaks.
 void GasStatistics::add_box_theory(MeasuredFigures& m) const {
   const double eta = m.interior_area_fraction.value;
   const EnskogTransport e = enskog_transport(eta, radius_, kT_);
@@ -502,18 +504,28 @@ void GasStatistics::add_box_theory(MeasuredFigures& m) const {
   fluid.sound_speed = e.sound_speed;
   fluid.thermal_diffusivity = e.thermal_diffusivity;
   fluid.sound_attenuation = e.sound_attenuation;
-  const InteriorWander wander = interior_wander(fluid, radius_, width_ + 2 * radius_,
-                                                height_ + 2 * radius_, interior_, m.duration);
+  auto wander = [&](double duration) {
+    return interior_wander(fluid, radius_, width_ + 2 * radius_, height_ + 2 * radius_,
+                           interior_, duration);
+  };
+  // eta_int and kT_int come from the same samples: the same batches.
+  const Average& eta_int = m.interior_area_fraction;
+  const InteriorWander whole = wander(m.duration), one = wander(eta_int.batch_time),
+                       all = wander(eta_int.batches * eta_int.batch_time);
   auto take = [](Average& average, double error) {
     if (average.status != ErrorStatus::short_batches || !std::isfinite(error)) return;
     average.error = error;
     average.why_no_error = nullptr;
     average.from_box_theory = true;
   };
-  take(m.interior_area_fraction, wander.area_fraction);
-  take(m.interior_kT, wander.kT);
+  take(m.interior_area_fraction,
+       corrected_by_batches(whole.area_fraction, one.area_fraction, all.area_fraction,
+                            eta_int.batches, eta_int.batch_error));
+  take(m.interior_kT, corrected_by_batches(whole.kT, one.kT, all.kT, eta_int.batches,
+                                           m.interior_kT.batch_error));
   const double slope = hard_disc_fluid_compressibility_slope(eta);
-  take(m.bulk_z, std::hypot(slope * wander.area_fraction, m.bulk_z_minus_theory.error));
+  take(m.bulk_z,
+       std::hypot(slope * m.interior_area_fraction.error, m.bulk_z_minus_theory.error));
 }
 // [/anchor: box-theory-errors]
 
@@ -534,8 +546,15 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   if (!(s.duration > 0)) return m;
   for (int q = 0; q < quantity_count; ++q) {
     Average& average = average_of(m, static_cast<Quantity>(q));
-    average = average_with_error(blocking_[static_cast<std::size_t>(q)]);
+    const BlockingAnalysis& samples = blocking_[static_cast<std::size_t>(q)];
+    average = average_with_error(samples);
     average.value = value_of(static_cast<Quantity>(q), s);
+    if (const int level = samples.batch_level(); level >= 0) {
+      average.batches =
+          static_cast<double>(samples.levels()[static_cast<std::size_t>(level)].blocks);
+      average.batch_time =
+          std::ldexp(s.duration / static_cast<double>(samples.count()), level);
+    }
   }
   add_box_theory(m);
   // The snapshots' averages.

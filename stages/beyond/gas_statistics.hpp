@@ -51,6 +51,8 @@ struct Average {
   // What the batches alone would claim (BlockingAnalysis::batch_error): the
   // error once it is known; before, a figure too short to trust.
   double batch_error = not_known;
+  double batch_time = not_known;  // the length of those batches, model time
+  double batches = 0;             // and how many there are
   // The error is the box's heat and sound's (beyond/box_modes.hpp), not the
   // batches': they are still shorter than the table's heat time.
   bool from_box_theory = false;

@@ -105,10 +105,10 @@ double fixed_count_rate_factor(double area_fraction, std::size_t balls);
 // the heat mode of wavelength L, the table's longer side (k = 2 pi / L; the
 // longest, k = pi / L, is odd and leaves the middle's average alone), with
 // D = lambda <v> (lambda: Enskog's mean free path at eta = N pi a^2 / (A1
-// A2), <v> = sqrt(pi kT / 2)). That D is a rough one, some 4.5 times below
-// Enskog's thermal diffusivity D_T at eta = 0.3 (beyond/enskog_transport.hpp):
-// so this is 4 to 5 relaxation times of that heat mode, and batches that
-// long hold (lesson 14 measures it). Some 370 time units for
+// A2), <v> = sqrt(pi kT / 2)). That D is a rough one, 4.4 times below
+// Enskog's thermal diffusivity D_T at eta = 0.3 (1.8 at 0.1, 15 at 0.5;
+// beyond/enskog_transport.hpp): so this is some 4 relaxation times of that
+// heat mode at eta = 0.3, and batches that long hold (lesson 14). Some 370 time units for
 // data/large-1000.scene, 3000 for large-10000. NaN for fewer than 2 balls
 // or a gas at rest.
 double table_heat_time(const Gas& gas);
