@@ -1,0 +1,229 @@
+// How far the time-averaged mean speed wanders. See
+// beyond/speed_relaxation.hpp and lessons/14-error-bars.md.
+//
+// Everything below is derived here (unit mass, k = 1, 2D, s = 2a, g = g(s));
+// we read no paper on it. tests/test_speed_relaxation.cpp checks each closed
+// form by quadrature and each matrix element by Monte Carlo over colliding
+// pairs, the way tests/test_enskog_transport.cpp samples them.
+//
+// 1. The static variance. In 2D x = v^2 / (2 kT) is exponential, density
+// e^-x, under Maxwell's distribution, so the isotropic Sonine polynomials
+// are the Laguerre polynomials L_p(x), orthonormal under e^-x. With
+// |v| = sqrt(2 kT x) and the integral of x^(1/2) L_p(x) e^-x over x,
+// Gamma(3/2) (-1/2)_p / p! (L_p's sum of powers, then Chu-Vandermonde),
+//   |v| = sqrt(kT) sum_p c_p L_p(x),   c_p = sqrt(pi / 2) (-1/2)_p / p!:
+// c_0 = sqrt(pi / 2) (<|v|> = sqrt(pi kT / 2)), c_1 = -c_0 / 2, c_2 = -c_0 /
+// 8, ... At fixed energy the projection onto {1, v^2} = {L_0, L_1} is fixed,
+// and what wanders is psi = sqrt(kT) sum_{p >= 2} c_p L_p, so
+//   <psi^2> = <v^2> - <|v|>^2 - cov(|v|, v^2)^2 / var(v^2)
+//           = 2 kT - pi kT / 2 - (sqrt(pi / 2) kT^(3/2))^2 / (4 kT^2)
+//           = (2 - 5 pi / 8) kT = 0.0365 kT,
+// using <|v|^3> = 3 sqrt(pi / 2) kT^(3/2), var(v^2) = 4 kT^2. The mean speed
+// of N balls at fixed E is (1 / N) sum_i |v_i|; to leading order in 1 / N its
+// variance is <psi^2> / N, 1 / 11.7 of the 2 - pi / 2 it would have at free
+// energy.
+//
+// 2. The correlation time. The sum over the balls of psi(v_i) is the k = 0
+// part of the one-ball distribution; to leading order in 1 / N it relaxes by
+// the linearised collision operator (Enskog: Boltzmann's times g), the
+// product of two fluctuations being a 1 / N correction. So its
+// autocorrelation is <psi exp(L t) psi> / N and its integral
+// <psi (-L)^-1 psi> / N = tau_int <psi^2> / N, with, for a perturbation phi
+// of Maxwell's distribution f0 (1 + phi),
+//   L phi(v1) = n g s < integral over e of (w.e) theta(w.e) D phi >_{v2},
+//   D phi = phi(v1') + phi(v2') - phi(v1) - phi(v2),
+// w = v1 - v2, v1' = v1 - (w.e) e, v2' = v2 + (w.e) e, e over the unit
+// circle (the collision rule of tests/test_enskog_transport.cpp). Swapping
+// the two balls and the collision with its inverse makes it symmetric:
+//   <phi (-L) chi> = (n g s / 4) < integral de (w.e) theta(w.e) D phi D chi >,
+// the average over two Maxwellian balls. So L_0 and L_1 (number, energy)
+// give zero, and -L is positive on the rest.
+//
+// The matrix elements. With V = (v1 + v2) / 2 and w = |w| (1, 0) (the pair
+// is isotropic), w' = |w| (cos chi, sin chi), and the e integral becomes
+// one over the scattering angle chi with the weight |w| (1/2) sin(chi / 2)
+// dchi on 0 ... 2 pi (impact parameter b = s sin((pi - chi) / 2)); x1, x2 =
+// V^2 / 2 + w^2 / 8 +- V.w / 2 (kT = 1), and after the collision the same
+// with w'. D L_p D L_q is a polynomial in V_x, V_y, |w|, cos chi, sin chi;
+// under Maxwell's distribution V and w are independent Gaussians with
+// variances 1/2 and 2 a component, so <V_x^a> = (a - 1)!! / 2^(a/2),
+// <|w|^m> = 2^m Gamma(m / 2 + 1) (|w|^2 / 4 is exponential), and the chi
+// integral of sin(chi / 2) cos^i chi sin^j chi is rational (t = cos(chi / 2)
+// turns it into a polynomial's integral over -1 ... 1). So
+//   <L_p (-L) L_q> = n g s sqrt(kT) sqrt(pi) r_pq,   r_pq rational:
+// r_22 = 1, r_23 = -1/4, r_33 = 27/16, r_34 = -59/128, r_44 = 2305/1024, and
+// r_2q = (-1/2)_(q-2) / ((q - 2)! 2^(q-2)). We expanded the polynomials
+// with a computer algebra system (SymPy) and tabulate r_pq below as doubles
+// (the rationals' nearest, 17 digits); the test checks them by Monte Carlo.
+//
+// 3. The Sonine approximation. <psi (-L)^-1 psi> = max over phi of
+// 2 <psi phi> - <phi (-L) phi>; over phi in L_2 ... L_P the maximum is
+// c^T M^-1 c (M_pq = r_pq, c the c_p, p = 2 ... P), a lower bound that grows
+// with P to the limit. It grows slowly: |v| has a square-root cusp at v = 0,
+// so c_p falls only as p^(-3/2), and the P-th step adds about c_P^2 over
+// the P-th eigenvalue of -L, which grows as the collision rate at the
+// speeds L_P reaches (|v| ~ sqrt(P) for hard discs): steps of about
+// P^(-3.5). Measured: the local exponent of the steps climbs 2.9, 3.1, 3.2,
+// 3.3 ... 3.4 from P = 4 to 16 (see the test). We add the tail as the steps
+// continued with the last step's local exponent beta (sum over p > P of
+// d_P (P / p)^beta); beta = 3.5 instead would change the limit by less than
+// the tabulated difference below. Values (tau_int n g s sqrt(kT)):
+// P = 2: pi / 128 / (2 - 5 pi / 8) = 0.3793; P = 3: 0.5106; 4: 0.5669;
+// 10: 0.6329; 16: see the test; the limit 0.64.
+// In mean free times 1 / (2 sqrt(pi) n g s sqrt(kT)) the limit is 2.3: the
+// shape of the speed distribution forgets itself in about two collisions per
+// ball.
+//
+// 4. The time average. For a stationary series of variance sigma^2 and
+// correlation rho(t), the average over W has the variance
+// (sigma^2 / W^2) integral over [0, W]^2 of rho(t - t'), which tends to
+// 2 tau_int sigma^2 / W for W >> tau_int. For rho = exp(-|t| / tau) the
+// integral is exact: (2 tau / W)(1 - (tau / W)(1 - exp(-W / tau))) sigma^2.
+// The true rho is a sum of exponentials (the eigenvalues of -L), so this
+// finite-W form is a model; both agree once W >> tau_int.
+#include "beyond/speed_relaxation.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include "beyond/hard_disc_fluid.hpp"
+
+namespace gas {
+
+namespace {
+
+constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
+constexpr int order_count = speed_sonine_order_limit - 1;  // p = 2 ... limit
+
+// r_pq = <L_p (-L) L_q> / (n g s sqrt(kT) sqrt(pi)) for 2 <= p <= q <= the
+// limit, row by row (section 2 above): the exact rationals, as doubles.
+// clang-format off
+constexpr std::array<double, order_count * (order_count + 1) / 2> upper_rows = {
+    1.0, -0.25, -0.03125, -0.0078125, -0.00244140625, -0.0008544921875, -0.0003204345703125, -0.000125885009765625, -5.1140785217285156e-05,  // p = 2
+    1.6875, -0.4609375, -0.064453125, -0.0179443359375, -0.006195068359375, -0.002376556396484375, -0.0009698867797851562, -0.0004120767116546631,  // p = 3
+    2.2509765625, -0.643310546875, -0.0961151123046875, -0.028675079345703125, -0.010594844818115234, -0.004338622093200684, -0.0018845312297344208,  // p = 4
+    2.74139404296875, -0.8054924011230469, -0.1257772445678711, -0.0393904447555542, -0.015292316675186157, -0.0065772561356425285,  // p = 5
+    3.1818602085113525, -0.952686607837677, -0.15355246514081955, -0.049857353791594505, -0.02010228665312752,  // p = 6
+    3.585287019610405, -1.0882623363286257, -0.1796579766087234, -0.05999120914202649,  // p = 7
+    3.9597896619234234, -1.21451988624176, -0.2043072937794932,  // p = 8
+    4.310874396978761, -1.3331027164690568,  // p = 9
+    4.642485466294275,  // p = 10
+
+};
+// clang-format on
+
+// (-1/2)_p / p!, the coefficient of x^(1/2) on L_p over Gamma(3/2).
+double half_coefficient(int p) {
+  double value = 1;
+  for (int k = 0; k < p; ++k) value *= (k - 0.5) / (k + 1);
+  return value;
+}
+
+// Solves the symmetric positive system a y = b (n by n, row-major) by
+// Cholesky's factorisation; returns y.
+std::vector<double> solve_positive(std::vector<double> a, std::vector<double> b, int n) {
+  for (int j = 0; j < n; ++j) {
+    for (int k = 0; k < j; ++k) a[j * n + j] -= a[j * n + k] * a[j * n + k];
+    a[j * n + j] = std::sqrt(a[j * n + j]);
+    for (int i = j + 1; i < n; ++i) {
+      for (int k = 0; k < j; ++k) a[i * n + j] -= a[i * n + k] * a[j * n + k];
+      a[i * n + j] /= a[j * n + j];
+    }
+  }
+  for (int i = 0; i < n; ++i) {  // L z = b
+    for (int k = 0; k < i; ++k) b[i] -= a[i * n + k] * b[k];
+    b[i] /= a[i * n + i];
+  }
+  for (int i = n - 1; i >= 0; --i) {  // L^T y = z
+    for (int k = i + 1; k < n; ++k) b[i] -= a[k * n + i] * b[k];
+    b[i] /= a[i * n + i];
+  }
+  return b;
+}
+
+}  // namespace
+
+double speed_shape_variance() {
+  return 2 - 5 * std::numbers::pi / 8;
+}
+
+double speed_sonine_coefficient(int p) {
+  if (p < 0) return not_known;
+  return std::sqrt(std::numbers::pi / 2) * half_coefficient(p);
+}
+
+double sonine_collision_element(int p, int q) {
+  if (p < 0 || q < 0 || p > speed_sonine_order_limit || q > speed_sonine_order_limit)
+    return not_known;
+  if (p < 2 || q < 2) return 0;
+  if (p > q) std::swap(p, q);
+  // Row p - 2 of the upper triangle starts after the rows above it.
+  const int row = p - 2, column = q - 2;
+  const int start = row * order_count - row * (row - 1) / 2;
+  return std::sqrt(std::numbers::pi) * upper_rows[start + column - row];
+}
+
+double speed_relaxation_sonine(int order) {
+  if (order < 2 || order > speed_sonine_order_limit) return not_known;
+  const int n = order - 1;
+  std::vector<double> m(n * n), c(n);
+  for (int i = 0; i < n; ++i) {
+    c[i] = speed_sonine_coefficient(i + 2);
+    for (int j = 0; j < n; ++j) m[i * n + j] = sonine_collision_element(i + 2, j + 2);
+  }
+  const std::vector<double> y = solve_positive(m, c, n);
+  double form = 0;  // c^T M^-1 c = <psi (-L)^-1 psi> / (kT / (n g s sqrt(kT)))
+  for (int i = 0; i < n; ++i) form += c[i] * y[i];
+  return form / speed_shape_variance();
+}
+
+SonineLimit speed_relaxation_limit() {
+  static const SonineLimit limit = [] {
+    const int last = speed_sonine_order_limit;
+    const double k2 = speed_relaxation_sonine(last - 2);
+    const double k1 = speed_relaxation_sonine(last - 1);
+    const double k0 = speed_relaxation_sonine(last);
+    const double step = k0 - k1, before = k1 - k2;
+    // The local exponent of the steps, d_P ~ P^-beta.
+    const double beta = std::log(before / step) / std::log(double(last) / (last - 1));
+    // The sum over p > P of step (P / p)^beta: terms to 10^5 P, then the
+    // integral of the rest.
+    double tail = 0;
+    const double end = 1e5 * last;
+    for (double p = last + 1; p <= end; ++p) tail += std::pow(last / p, beta);
+    tail += last / (beta - 1) * std::pow(last / end, beta - 1);
+    return SonineLimit{k0 + step * tail, step * tail};
+  }();
+  return limit;
+}
+
+MeanSpeedWander mean_speed_wander(double area_fraction, double radius, double kT,
+                                  std::size_t balls, double duration) {
+  MeanSpeedWander out{not_known, not_known, not_known, not_known, not_known};
+  const double g = hard_disc_fluid_contact_value(area_fraction);
+  if (!(area_fraction > 0) || std::isnan(g) || !(radius > 0) || !(kT > 0) || balls < 2)
+    return out;
+  const double pi = std::numbers::pi;
+  const double density = area_fraction / (pi * radius * radius);
+  const double rate = density * g * 2 * radius * std::sqrt(kT);  // n g s sqrt(kT)
+  const double n = static_cast<double>(balls);
+  out.instant_spread = std::sqrt(speed_shape_variance() * kT / n);
+  out.collision_time = 1 / (2 * std::sqrt(pi) * rate);
+  out.relaxation_time = speed_relaxation_limit().value / rate;
+  if (!(duration > 0)) return out;
+  const double tau = out.relaxation_time, ratio = tau / duration, y = duration / tau;
+  // (2 tau / W)(1 - (tau / W)(1 - exp(-W / tau))) = (2 / y^2)(y - 1 + e^-y),
+  // y = W / tau; below y = 1e-3 its series 1 - y / 3 + y^2 / 12 (the next
+  // term, y^3 / 60, is below 2e-11), where the closed form cancels.
+  const double factor =
+      y < 1e-3 ? 1 - y / 3 + y * y / 12 : 2 / (y * y) * (y + std::expm1(-y));
+  out.error = out.instant_spread * std::sqrt(factor);
+  out.long_time_error = out.instant_spread * std::sqrt(2 * ratio);
+  return out;
+}
+
+}  // namespace gas
