@@ -53,8 +53,10 @@
 //   <L_p (-L) L_q> = n g s sqrt(kT) sqrt(pi) r_pq,   r_pq rational:
 // r_22 = 1, r_23 = -1/4, r_33 = 27/16, r_34 = -59/128, r_44 = 2305/1024, and
 // r_2q = (-1/2)_(q-2) / ((q - 2)! 2^(q-2)). We expanded the polynomials
-// with a computer algebra system (SymPy) and tabulate r_pq below as doubles
-// (the rationals' nearest, 17 digits); the test checks them by Monte Carlo.
+// with a computer algebra system (SymPy) and tabulate r_pq below for p, q
+// <= 10 as the rationals themselves (their denominators are powers of 2 and
+// their numerators below 2^53, so each double is exact); the test checks
+// them by Monte Carlo.
 //
 // 3. The Sonine approximation. <psi (-L)^-1 psi> = max over phi of
 // 2 <psi phi> - <phi (-L) phi>; over phi in L_2 ... L_P the maximum is
@@ -63,16 +65,17 @@
 // so c_p falls only as p^(-3/2), and the P-th step adds about c_P^2 over
 // the P-th eigenvalue of -L, which grows as the collision rate at the
 // speeds L_P reaches (|v| ~ sqrt(P) for hard discs): steps of about
-// P^(-3.5). Measured: the local exponent of the steps climbs 2.9, 3.1, 3.2,
-// 3.3 ... 3.4 from P = 4 to 16 (see the test). We add the tail as the steps
-// continued with the last step's local exponent beta (sum over p > P of
-// d_P (P / p)^beta); beta = 3.5 instead would change the limit by less than
-// the tabulated difference below. Values (tau_int n g s sqrt(kT)):
-// P = 2: pi / 128 / (2 - 5 pi / 8) = 0.3793; P = 3: 0.5106; 4: 0.5669;
-// 10: 0.6329; 16: see the test; the limit 0.64.
-// In mean free times 1 / (2 sqrt(pi) n g s sqrt(kT)) the limit is 2.3: the
-// shape of the speed distribution forgets itself in about two collisions per
-// ball.
+// P^(-3.5). Measured: the local exponent of the steps climbs 2.95, 3.12,
+// 3.22, 3.29, 3.33, 3.35, 3.36 from P = 4 to 10. We add the tail as the
+// steps continued with the last step's local exponent beta (the sum over
+// p > P of d_P (P / p)^beta): an overestimate while beta still climbs, and
+// beta = 3.5 an underestimate; they bracket the limit within 0.1 %. Values
+// of tau_int n g s sqrt(kT): P = 2: sqrt(pi) / 128 / (2 - 5 pi / 8) =
+// 0.3793; P = 3: (35 sqrt(pi) / 3328) / (2 - 5 pi / 8) = 0.5106; 4: 0.5669;
+// 5: 0.5950; 6: 0.6106; 8: 0.6260; 10: 0.6329; the limit 0.6436 (from P = 8
+// 0.6439, from P = 6 0.6456; with beta = 3.5 from P = 10, 0.6429). In mean
+// free times 1 / (2 sqrt(pi) n g s sqrt(kT)) the limit is 2.28: the shape of
+// the speed distribution forgets itself in about two collisions per ball.
 //
 // 4. The time average. For a stationary series of variance sigma^2 and
 // correlation rho(t), the average over W has the variance
@@ -100,19 +103,34 @@ constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 constexpr int order_count = speed_sonine_order_limit - 1;  // p = 2 ... limit
 
 // r_pq = <L_p (-L) L_q> / (n g s sqrt(kT) sqrt(pi)) for 2 <= p <= q <= the
-// limit, row by row (section 2 above): the exact rationals, as doubles.
+// limit, row by row (section 2 above): the exact rationals.
 // clang-format off
 constexpr std::array<double, order_count * (order_count + 1) / 2> upper_rows = {
-    1.0, -0.25, -0.03125, -0.0078125, -0.00244140625, -0.0008544921875, -0.0003204345703125, -0.000125885009765625, -5.1140785217285156e-05,  // p = 2
-    1.6875, -0.4609375, -0.064453125, -0.0179443359375, -0.006195068359375, -0.002376556396484375, -0.0009698867797851562, -0.0004120767116546631,  // p = 3
-    2.2509765625, -0.643310546875, -0.0961151123046875, -0.028675079345703125, -0.010594844818115234, -0.004338622093200684, -0.0018845312297344208,  // p = 4
-    2.74139404296875, -0.8054924011230469, -0.1257772445678711, -0.0393904447555542, -0.015292316675186157, -0.0065772561356425285,  // p = 5
-    3.1818602085113525, -0.952686607837677, -0.15355246514081955, -0.049857353791594505, -0.02010228665312752,  // p = 6
-    3.585287019610405, -1.0882623363286257, -0.1796579766087234, -0.05999120914202649,  // p = 7
-    3.9597896619234234, -1.21451988624176, -0.2043072937794932,  // p = 8
-    4.310874396978761, -1.3331027164690568,  // p = 9
-    4.642485466294275,  // p = 10
-
+    // p = 2, q = 2 ... 10
+    1.0, -1.0 / 4, -1.0 / 32, -1.0 / 128, -5.0 / 2048, -7.0 / 8192, -21.0 / 65536,
+    -33.0 / 262144, -429.0 / 8388608,
+    // p = 3, q = 3 ... 10
+    27.0 / 16, -59.0 / 128, -33.0 / 512, -147.0 / 8192, -203.0 / 32768, -623.0 / 262144,
+    -1017.0 / 1048576, -13827.0 / 33554432,
+    // p = 4, q = 4 ... 10
+    2305.0 / 1024, -2635.0 / 4096, -6299.0 / 65536, -7517.0 / 262144,
+    -22219.0 / 2097152, -36395.0 / 8388608, -505875.0 / 268435456,
+    // p = 5, q = 5 ... 10
+    44915.0 / 16384, -211155.0 / 262144, -131887.0 / 1048576, -330431.0 / 8388608,
+    -513125.0 / 33554432, -7062275.0 / 1073741824,
+    // p = 6, q = 6 ... 10
+    13345689.0 / 4194304, -15983429.0 / 16777216, -20609463.0 / 134217728,
+    -26766963.0 / 536870912, -345354655.0 / 17179869184,
+    // p = 7, q = 7 ... 10
+    240604539.0 / 67108864, -584256393.0 / 536870912, -385812567.0 / 2147483648,
+    -4122564501.0 / 68719476736,
+    // p = 8, q = 8 ... 10
+    17007167097.0 / 4294967296, -20865292767.0 / 17179869184,
+    -112319122575.0 / 549755813888,
+    // p = 9, q = 9 ... 10
+    296241032835.0 / 68719476736, -2931523875555.0 / 2199023255552,
+    // p = 10, q = 10 ... 10
+    326685872126185.0 / 70368744177664,
 };
 // clang-format on
 
@@ -190,12 +208,11 @@ SonineLimit speed_relaxation_limit() {
     const double step = k0 - k1, before = k1 - k2;
     // The local exponent of the steps, d_P ~ P^-beta.
     const double beta = std::log(before / step) / std::log(double(last) / (last - 1));
-    // The sum over p > P of step (P / p)^beta: terms to 10^5 P, then the
-    // integral of the rest.
+    // The sum over p > P of step (P / p)^beta, to p = 10^5 P: what it leaves
+    // out is about P / (beta - 1) (10^5)^(1 - beta), below 1e-10 of the value
+    // for beta > 3.
     double tail = 0;
-    const double end = 1e5 * last;
-    for (double p = last + 1; p <= end; ++p) tail += std::pow(last / p, beta);
-    tail += last / (beta - 1) * std::pow(last / end, beta - 1);
+    for (double p = last + 1; p <= 1e5 * last; ++p) tail += std::pow(last / p, beta);
     return SonineLimit{k0 + step * tail, step * tail};
   }();
   return limit;

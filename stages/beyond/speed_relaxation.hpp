@@ -15,7 +15,7 @@
 //    g(2a), solved in the isotropic Sonine (Laguerre) polynomials L_p(x), x =
 //    v^2 / (2 kT), p = 2 ... P, whose matrix elements <L_p (-L) L_q> are
 //    exact (tabulated here from their derivation in speed_relaxation.cpp),
-//    with the limit P -> infinity extrapolated from P = 2 ... 16.
+//    with the limit P -> infinity extrapolated from P = 8 ... 10.
 // Then Var(average over W) = 2 tau_int <psi^2> / (N W) for W >> tau_int,
 // and with the correlation modelled as exp(-t / tau_int) for any W.
 // Everything is derived in speed_relaxation.cpp; tests/test_speed_relaxation.cpp
