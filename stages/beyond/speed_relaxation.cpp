@@ -93,8 +93,8 @@
 // 4.64e-4 predicted; at T = 400 (W = 272): 8.75e-4 against 8.28e-4. Both
 // ratios 1.06, within the 11 % a spread of 40 seeds is known to. The
 // exponential model also gives the autocorrelation of the mean speed over
-// single time units that data/reports/kinetic-seeds.md measured: 0.780,
-// 0.530, 0.360, 0.166 at lags 1, 2, 3, 5 (measured 0.773, 0.516, 0.345,
+// single time units that data/reports/kinetic-seeds.md measured: 0.779,
+// 0.529, 0.359, 0.166 at lags 1, 2, 3, 5 (measured 0.773, 0.516, 0.345,
 // 0.162), and the square root of the statistical inefficiency over W,
 // 2.39 to 2.42 for W = 100 ... 1300 (measured 2.05 ... 2.52).
 #include "beyond/speed_relaxation.hpp"
