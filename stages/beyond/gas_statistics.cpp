@@ -13,6 +13,7 @@
 #include "beyond/fluid_structure.hpp"
 #include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
+#include "beyond/speed_relaxation.hpp"
 
 namespace gas {
 namespace {
@@ -480,6 +481,18 @@ Average average_with_error(const BlockingAnalysis& samples, double scale) {
   return average;
 }
 
+namespace {
+
+// A theory's error in place of the batches', while they are too short.
+void take_theory_error(Average& average, double error) {
+  if (average.status != ErrorStatus::short_batches || !std::isfinite(error)) return;
+  average.error = error;
+  average.why_no_error = nullptr;
+  average.from_theory = true;
+}
+
+}  // namespace
+
 // [anchor: box-theory-errors]
 // The slow figures of the interior wander with the box's longest waves of
 // heat and sound, which the batches cannot see until they are as long as
@@ -512,22 +525,31 @@ void GasStatistics::add_box_theory(MeasuredFigures& m) const {
   const Average& eta_int = m.interior_area_fraction;
   const InteriorWander whole = wander(m.duration), one = wander(eta_int.batch_time),
                        all = wander(eta_int.batches * eta_int.batch_time);
-  auto take = [](Average& average, double error) {
-    if (average.status != ErrorStatus::short_batches || !std::isfinite(error)) return;
-    average.error = error;
-    average.why_no_error = nullptr;
-    average.from_box_theory = true;
-  };
-  take(m.interior_area_fraction,
-       corrected_by_batches(whole.area_fraction, one.area_fraction, all.area_fraction,
-                            eta_int.batches, eta_int.batch_error));
-  take(m.interior_kT, corrected_by_batches(whole.kT, one.kT, all.kT, eta_int.batches,
-                                           m.interior_kT.batch_error));
+  take_theory_error(
+      m.interior_area_fraction,
+      corrected_by_batches(whole.area_fraction, one.area_fraction, all.area_fraction,
+                           eta_int.batches, eta_int.batch_error));
+  take_theory_error(m.interior_kT,
+                    corrected_by_batches(whole.kT, one.kT, all.kT, eta_int.batches,
+                                         m.interior_kT.batch_error));
   const double slope = hard_disc_fluid_compressibility_slope(eta);
-  take(m.bulk_z,
-       std::hypot(slope * m.interior_area_fraction.error, m.bulk_z_minus_theory.error));
+  take_theory_error(m.bulk_z, std::hypot(slope * m.interior_area_fraction.error,
+                                         m.bulk_z_minus_theory.error));
 }
 // [/anchor: box-theory-errors]
+
+// The mean speed forgets within a few collisions a ball, but its batches
+// wait for 25 pair collisions per ball (speeds_batch_collisions); until 16
+// of them fit, its error is kinetic theory's (beyond/speed_relaxation.hpp:
+// the speeds' shape at fixed energy, erased by Enskog's collisions) at the
+// whole table's eta, where the balls it averages are.
+void GasStatistics::add_speeds_theory(MeasuredFigures& m) const {
+  const double table = (width_ + 2 * radius_) * (height_ + 2 * radius_);
+  const double eta =
+      static_cast<double>(balls_) * std::numbers::pi * radius_ * radius_ / table;
+  take_theory_error(m.mean_speed,
+                    mean_speed_wander(eta, radius_, kT_, balls_, m.duration).error);
+}
 
 MeasuredFigures GasStatistics::measured(const Gas& gas) const {
   MeasuredFigures m;
@@ -557,6 +579,7 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
     }
   }
   add_box_theory(m);
+  add_speeds_theory(m);
   // The snapshots' averages.
   m.pair_contact = average_with_error(structure_.pair_contact());
   m.pair_contact_minus_theory =

@@ -34,8 +34,8 @@ namespace gas {
 inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 
 // A time average and its statistical error (one standard error, from a
-// blocking analysis, or for the interior's slow figures from the box's heat
-// and sound until the batches are long enough: from_box_theory); the error
+// blocking analysis, or from a theory until the batches are long enough:
+// from_theory); the error
 // is not known (NaN) until one of them gives it, the value not known before
 // the averages start. While the error is
 // blank, `why_no_error` may say why in a few words, which the statistics
@@ -53,9 +53,10 @@ struct Average {
   double batch_error = not_known;
   double batch_time = not_known;  // the length of those batches, model time
   double batches = 0;             // and how many there are
-  // The error is the box's heat and sound's (beyond/box_modes.hpp), not the
-  // batches': they are still shorter than the table's heat time.
-  bool from_box_theory = false;
+  // The error is a theory's, not the batches' (still too short): the box's
+  // heat and sound for the interior's eta, kT and Z (beyond/box_modes.hpp),
+  // kinetic theory's for the mean speed (beyond/speed_relaxation.hpp).
+  bool from_theory = false;
 };
 
 // The mean of `samples` times `scale`, with its error by the blocking rule,
@@ -229,6 +230,8 @@ class GasStatistics final : public CollisionObserver {
   // The interior's eta and kT, and Z, while their batches are short: their
   // errors from the box's heat and sound over the time averaged (lesson 14).
   void add_box_theory(MeasuredFigures& m) const;
+  // The mean speed's, while its batches are short: kinetic theory's.
+  void add_speeds_theory(MeasuredFigures& m) const;
   // Closes a sample for the error bars at `time` (every N collisions).
   void take_sample(const Gas& gas, double time);
   Sums sums_at(const Gas& gas, double now) const;  // with the flights in progress
