@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -35,6 +36,15 @@ gas::Figures some_figures() {
   f.energy_drift = -1.25e-16;
   f.momentum = {0.1, -2.0 / 3};
   return f;
+}
+
+Estimate over_batches(const std::vector<double>& values) {
+  double sum = 0, square = 0;
+  for (const double x : values) sum += x;
+  const auto n = static_cast<double>(values.size());
+  const double mean = sum / n;
+  for (const double x : values) square += (x - mean) * (x - mean);
+  return {mean, std::sqrt(square / (n - 1) / n)};
 }
 
 std::string source_path(const std::string& relative) {

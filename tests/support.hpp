@@ -29,6 +29,14 @@ struct Scratch {
 // digits among them (T = 12.5, T0 = 0.5, 4 wall and 3 ball collisions, ...).
 gas::Figures some_figures();
 
+// A mean over independent batch values (Monte Carlo batches, say) and its
+// standard error.
+struct Estimate {
+  double value = 0;
+  double error = 0;
+};
+Estimate over_batches(const std::vector<double>& values);
+
 // A path inside the source tree, e.g. source_path("data/default.scene").
 std::string source_path(const std::string& relative);
 

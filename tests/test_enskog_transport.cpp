@@ -39,25 +39,14 @@
 #include "beyond/enskog_transport.hpp"
 #include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
+#include "support.hpp"
 
 namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// A mean over independent samples and its standard error.
-struct Estimate {
-  double value = 0;
-  double error = 0;
-};
-
-// The mean of a few independent batch values and its standard error.
-Estimate over_batches(const std::vector<double>& values) {
-  double sum = 0, square = 0;
-  for (const double x : values) sum += x;
-  const double mean = sum / values.size();
-  for (const double x : values) square += (x - mean) * (x - mean);
-  return {mean, std::sqrt(square / (values.size() - 1) / values.size())};
-}
+using gas::testing::Estimate;
+using gas::testing::over_batches;
 
 // Two balls at contact, as kinetic theory weighs the encounter in d
 // dimensions: velocities v1 and v2 from Maxwell's distribution (kT = 1,

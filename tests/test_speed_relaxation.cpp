@@ -26,6 +26,7 @@
 #include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
 #include "beyond/speed_relaxation.hpp"
+#include "support.hpp"
 
 // Every doctest::Approx below is relative, .scale(0): doctest's default scale
 // of 1 would make it absolute for the small speeds compared here.
@@ -63,19 +64,8 @@ double against_exponential(F h) {
   return sum * step / 3;
 }
 
-// A mean over batches and its standard error.
-struct Estimate {
-  double value = 0;
-  double error = 0;
-};
-
-Estimate over_batches(const std::vector<double>& values) {
-  double sum = 0, square = 0;
-  for (const double x : values) sum += x;
-  const double mean = sum / values.size();
-  for (const double x : values) square += (x - mean) * (x - mean);
-  return {mean, std::sqrt(square / (values.size() - 1) / values.size())};
-}
+using gas::testing::Estimate;
+using gas::testing::over_batches;
 
 // The matrix elements <L_p (-L) L_q> / (n g s sqrt(kT)) for p, q = 0 ...
 // Top by Monte Carlo at kT = 1: two Maxwellian velocities (drawn at kT =

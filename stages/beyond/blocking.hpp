@@ -75,8 +75,10 @@
 //    errors 1.4 times too small): hence rule 2.
 // So for independent samples the error is known from 16 samples on. On the
 // gas itself (build/gas, data/reports/kinetic-seeds.md, "spread": 40 gases
-// like data/large-1000.scene at T = 150 ... 12000) wherever an error is
-// shown (x - mean) / error scatters 0.93 to 1.16 over the seeds.
+// like data/large-1000.scene at T = 150 ... 12000) wherever this rule's
+// error is shown (x - mean) / error scatters 0.98 to 1.16 over the seeds.
+// (While the batches are short the statistics show a theory's error for
+// some figures instead: beyond/gas_statistics.hpp, from_theory.)
 //
 // The chosen e_k is biased low by the correlation left between batches of
 // length b = 2^k, a fraction of order tau / b (for a positively correlated
