@@ -313,7 +313,8 @@ echo "known once the batches are as long as the table's heat time (for the"
 echo "figures that follow it; 25 pair collisions per ball for the mean speed)"
 echo "and Jonsson's test sees them uncorrelated (stages/beyond/blocking.hpp);"
 echo "until then the interior's η, kT and Z take theirs from the box's heat and"
-echo "sound (stages/beyond/box_modes.hpp)."
+echo "sound (stages/beyond/box_modes.hpp), the mean speed from kinetic theory"
+echo "(stages/beyond/speed_relaxation.hpp)."
 echo
 if has theory; then
   echo "## Each figure against its theory"
