@@ -21,10 +21,10 @@
 //
 // Assumptions: unit mass and k = 1; a fluid in equilibrium in a rectangular
 // box, described by linear hydrodynamics for waves longer than a ball (the
-// sum stops at k = 1/a; shorter waves add less than 1 % on the tables of
-// data/); the interior far enough from the walls that its fluid is the
-// bulk's. The transport coefficients come from the caller (Enskog's:
-// beyond/enskog_transport.hpp).
+// sum stops at k = 1/a; shorter waves add less than 1 % on
+// data/large-1000.scene); the interior far enough from the walls that its
+// fluid is the bulk's. The transport coefficients come from the caller
+// (Enskog's: beyond/enskog_transport.hpp).
 #pragma once
 
 #include <limits>
