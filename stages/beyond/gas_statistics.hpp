@@ -35,9 +35,8 @@ inline constexpr double not_known = std::numeric_limits<double>::quiet_NaN();
 
 // A time average and its statistical error (one standard error, from a
 // blocking analysis, or from a theory until the batches are long enough:
-// from_theory); the error
-// is not known (NaN) until one of them gives it, the value not known before
-// the averages start. While the error is
+// from_theory); the error is not known (NaN) until one of them gives it,
+// the value not known before the averages start. While the error is
 // blank, `why_no_error` may say why in a few words, which the statistics
 // screen shows in its place: "few samples" (fewer than the blocking's 16),
 // "not yet" (its batches are shorter than the table's heat time, or still

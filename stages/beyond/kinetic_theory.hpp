@@ -108,9 +108,9 @@ double fixed_count_rate_factor(double area_fraction, std::size_t balls);
 // A2), <v> = sqrt(pi kT / 2)). That D is a rough one, 4.4 times below
 // Enskog's thermal diffusivity D_T at eta = 0.3 (1.8 at 0.1, 15 at 0.5;
 // beyond/enskog_transport.hpp): so this is some 4 relaxation times of that
-// heat mode at eta = 0.3, and batches that long hold (lesson 14). Some 370 time units for
-// data/large-1000.scene, 3000 for large-10000. NaN for fewer than 2 balls
-// or a gas at rest.
+// heat mode at eta = 0.3, and batches that long hold (lesson 14). Some 370
+// time units for data/large-1000.scene, 3000 for large-10000. NaN for fewer
+// than 2 balls or a gas at rest.
 double table_heat_time(const Gas& gas);
 
 // The time a ball takes for speeds_batch_collisions collisions
