@@ -109,6 +109,11 @@ int BlockingAnalysis::batch_level() const {
   return static_cast<int>(top) - 1;
 }
 
+std::size_t BlockingAnalysis::batches() const {
+  const int level = batch_level();
+  return level < 0 ? 0 : levels_[static_cast<std::size_t>(level)].blocks;
+}
+
 // [anchor: error-rule]
 ErrorStatus BlockingAnalysis::status() const {
   // 1. Batch means: fewest_blocks_ (16) to twice as many less one batches.

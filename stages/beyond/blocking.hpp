@@ -148,6 +148,8 @@ class BlockingAnalysis {
   // The batches' level, whether or not the error is known there (-1 before
   // there are 16 samples).
   int batch_level() const;
+  // How many blocks the batches' level holds (0 before there are 16 samples).
+  std::size_t batches() const;
   // The level the error was taken from, or -1 if the error is not known.
   int chosen_level() const;
   // Jonsson's M over levels first ... last (those with at least 2 blocks;

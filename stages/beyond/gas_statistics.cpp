@@ -501,11 +501,18 @@ void take_theory_error(Average& average, double error) {
 // kT, with Enskog's transport (beyond/box_modes.hpp), over the time
 // averaged, its short part replaced by what the run's own batches see
 // (corrected_by_batches: hydrodynamics is short of the truth within a free
-// time or two, where the balls do not yet move as a fluid). Z follows eta_int (Z -
-// Z_ref(eta_int) forgets within a few collisions a ball): its error is dZ/deta times
-// eta_int's, beside that difference's own. Once the batches are long
-// enough, or if the test sees them correlated, the blocking rule speaks.
+// time or two, where the balls do not yet move as a fluid). Z follows
+// eta_int (Z - Z_ref(eta_int) forgets within a few collisions a ball): its
+// error is dZ/deta times eta_int's, beside that difference's own. Once the
+// batches are long enough, or if the test sees them correlated, the
+// blocking rule speaks, and the sums over the waves are not needed.
 void GasStatistics::add_box_theory(MeasuredFigures& m) const {
+  auto short_batches = [](const Average& a) {
+    return a.status == ErrorStatus::short_batches;
+  };
+  if (!short_batches(m.interior_area_fraction) && !short_batches(m.interior_kT) &&
+      !short_batches(m.bulk_z))
+    return;
   const double eta = m.interior_area_fraction.value;
   const EnskogTransport e = enskog_transport(eta, radius_, kT_);
   BoxHydrodynamics fluid;
@@ -572,8 +579,7 @@ MeasuredFigures GasStatistics::measured(const Gas& gas) const {
     average = average_with_error(samples);
     average.value = value_of(static_cast<Quantity>(q), s);
     if (const int level = samples.batch_level(); level >= 0) {
-      average.batches =
-          static_cast<double>(samples.levels()[static_cast<std::size_t>(level)].blocks);
+      average.batches = static_cast<double>(samples.batches());
       average.batch_time =
           std::ldexp(s.duration / static_cast<double>(samples.count()), level);
     }
