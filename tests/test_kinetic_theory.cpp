@@ -43,6 +43,7 @@
 #include "beyond/random_placement.hpp"
 #include "beyond/speed_relaxation.hpp"
 #include "beyond/strategy.hpp"
+#include "beyond/wall_push.hpp"
 #include "program/console.hpp"
 #include "stage7_control.hpp"
 
@@ -521,6 +522,16 @@ TEST_SUITE("kinetic-theory") {
           doctest::Approx(
               gas::mean_speed_wander(table_eta, g.radius, kT, 1000, m.duration).error)
               .epsilon(1e-12));
+    // The push on the walls' middles: the fluid's friction on them and the
+    // box's sound (beyond/wall_push.hpp) at the interior's eta.
+    REQUIRE(m.wall_middle_pressure.status == gas::ErrorStatus::short_batches);
+    CHECK(m.wall_middle_pressure.from_theory);
+    CHECK(m.wall_middle_pressure.error ==
+          doctest::Approx(
+              gas::middles_push_wander(fluid, {e.shear_viscosity, e.bulk_viscosity},
+                                       g.radius, g.width, g.height,
+                                       {interior.y_min, interior.y_max}, m.duration))
+              .epsilon(1e-12));
     // The batches behind batch_error: 16 to 31 of them, filling the time
     // averaged but for less than one batch.
     CHECK(eta_int.batches <= 31);
@@ -540,6 +551,7 @@ TEST_SUITE("kinetic-theory") {
     CHECK_FALSE(late.interior_area_fraction.from_theory);
     CHECK_FALSE(late.bulk_z.from_theory);
     CHECK_FALSE(late.mean_speed.from_theory);
+    CHECK_FALSE(late.wall_middle_pressure.from_theory);
   }
 
   TEST_CASE(

@@ -47,14 +47,17 @@
 # speeds: how fast the figures forget (gas_statistics.hpp,
 #   speeds_batch_collisions; lesson 14): the spread's 40 gases again, to
 #   T = 1500 with a row every time unit; from each run's mean_speed_average,
-#   eta_interior and kT_interior their series over single time units (the
-#   sums between rows), scaled by the seed's kT to their powers; over the
+#   eta_interior, kT_interior and pressure (the push on the walls' middles)
+#   their series over single time units (the sums between rows), scaled by
+#   the seed's kT to their powers; over the
 #   seeds their autocorrelation at lags of 1 to 400 time units (section
 #   speeds), the mean speed's lag below 1/e (interpolated) in time units and
 #   in pair collisions per ball at the gases' mean rate, collision_rate_box
 #   (speeds-fold), and the spread over the seeds of each average over the
 #   first W time units against what independent time units would give
-#   (speeds-windows: flat in W, no slow part).
+#   (speeds-windows: flat in W, no slow part; falling for the push, whose
+#   noise the sound it sends cancels), and that spread of the push beside
+#   the error the program quotes for it from theory (speeds-push).
 # eos: the equation of state of lesson 13: data/eos-0.1.scene, eos-0.3 and
 #   eos-0.5 (4096 balls on a lattice) to T = 2000, 4000, 2000; the last row
 #   of each --csv: Z, its theory for N balls, their difference sample by
@@ -314,7 +317,8 @@ echo "figures that follow it; 25 pair collisions per ball for the mean speed)"
 echo "and Jonsson's test sees them uncorrelated (stages/beyond/blocking.hpp);"
 echo "until then the interior's η, kT and Z take theirs from the box's heat and"
 echo "sound (stages/beyond/box_modes.hpp), the mean speed from kinetic theory"
-echo "(stages/beyond/speed_relaxation.hpp)."
+echo "(stages/beyond/speed_relaxation.hpp), the push on the walls' middles from"
+echo "the fluid's friction on them and the box's sound (stages/beyond/wall_push.hpp)."
 echo
 if has theory; then
   echo "## Each figure against its theory"
@@ -360,10 +364,13 @@ if has speeds; then
   echo
   echo "The spread's $(echo "$spread_seeds" | wc -w) gases to T = $speeds_until, a row every time unit:"
   echo "each figure over each time unit from the averages' start (the sums"
-  echo "between rows: the mean speed over √kT, η_int, kT_int over kT), its"
-  echo "autocorrelation over the seeds, and the spread over the seeds of its"
-  echo "average over the first W time units against independent time units'"
-  echo "(the ratio: the square root of the statistical inefficiency over W)."
+  echo "between rows: the mean speed over √kT, η_int, kT_int and the push on"
+  echo "the walls' middles over kT), its autocorrelation over the seeds, and the"
+  echo "spread over the seeds of its average over the first W time units against"
+  echo "independent time units' (the ratio: the square root of the statistical"
+  echo "inefficiency over W). Last, the push's spread beside the error the"
+  echo "program quotes for it from theory (beyond/wall_push.hpp), the root mean"
+  echo "square over the seeds at the row that ends the W-th time unit."
   echo
   for s in $spread_seeds; do echo "$tmp/speeds-$s.csv"; done | xargs awk -F, '
     function num(v) { return (v == "nan" || v == "-nan" || v == "") ? "nan" : v + 0 }
@@ -374,22 +381,25 @@ if has speeds; then
       # Running sums: the mean speed, the interior ball-time (as eta t) and
       # its kinetic energy (as kT_int eta t).
       speed = $c["mean_speed_average"] * t; inside = $c["eta_interior"] * t
-      energy = $c["kT_interior"] * inside
+      energy = $c["kT_interior"] * inside; push = $c["pressure"] * t
       if (have && t - last_t > 0.999 && t - last_t < 1.001) {
         ++len[runs]
         x[1, runs, len[runs]] = speed - last_speed
         x[2, runs, len[runs]] = inside - last_inside
         x[3, runs, len[runs]] = (energy - last_energy) / (inside - last_inside)
+        x[4, runs, len[runs]] = push - last_push
+        push_error[runs, len[runs]] = num($c["pressure_error"])
       }
-      last_t = t; last_speed = speed; last_inside = inside; last_energy = energy; have = 1
+      last_t = t; last_speed = speed; last_inside = inside; last_energy = energy
+      last_push = push; have = 1
       kT[runs] = $c["kT"]; rate[runs] = $c["collision_rate_box"]
     }
     END {
-      split("mean speed|eta_interior|kT_interior", names, "|")
-      split("0.5 0 1", power, " ")
+      split("mean speed|eta_interior|kT_interior|pressure", names, "|")
+      split("0.5 0 1 1", power, " ")
       n = len[1]
       for (r = 1; r <= runs; ++r) if (len[r] < n) n = len[r]
-      for (f = 1; f <= 3; ++f) {
+      for (f = 1; f <= 4; ++f) {
         for (r = 1; r <= runs; ++r) for (i = 1; i <= n; ++i) {
           x[f, r, i] /= kT[r] ^ power[f]; mean[f] += x[f, r, i] / (runs * n)
         }
@@ -401,7 +411,7 @@ if has speeds; then
       header = "| autocorrelation at lag (time units) |"; rule = "|---|"
       for (k = 1; k in lags; ++k) { header = header " " lags[k] " |"; rule = rule "---|" }
       print header; print rule
-      for (f = 1; f <= 3; ++f) {
+      for (f = 1; f <= 4; ++f) {
         row = "| " names[f] " |"
         for (k = 1; k in lags; ++k) row = row sprintf(" %.3f |", acf(f, lags[k]))
         print row
@@ -418,20 +428,35 @@ if has speeds; then
       print "|---|---|---|"
       printf "| %.1f | %.1f | %.3f |\n\n", fold, fold * mean_rate, mean_rate
       print "<!-- section: speeds-windows -->"
-      print "| W (time units) | mean speed | eta_interior | kT_interior |"
-      print "|---|---|---|---|"
+      print "| W (time units) | mean speed | eta_interior | kT_interior | pressure |"
+      print "|---|---|---|---|---|"
       split("30 100 270 870 1300", windows, " ")
       for (k = 1; k in windows; ++k) {
         w = windows[k]; if (w > n) break
         row = sprintf("| %d |", w)
-        for (f = 1; f <= 3; ++f) {
-          m = 0; v = 0
-          for (r = 1; r <= runs; ++r) { a_w[r] = 0; for (i = 1; i <= w; ++i) a_w[r] += x[f, r, i] / w; m += a_w[r] / runs }
-          for (r = 1; r <= runs; ++r) v += (a_w[r] - m) ^ 2 / (runs - 1)
-          row = row sprintf(" %.2f |", sqrt(v / (var[f] / w)))
+        for (f = 1; f <= 4; ++f) {
+          row = row sprintf(" %.2f |", sqrt(scatter(f, w) / (var[f] / w)))
         }
         print row
       }
+      print ""
+      print "<!-- section: speeds-push -->"
+      print "| W (time units) | the push: scatter over the seeds | error from theory | scatter / error |"
+      print "|---|---|---|---|"
+      split("30 100 200 270 400 870 1300", windows, " ")
+      for (k = 1; k in windows; ++k) {
+        w = windows[k]; if (w > n) break
+        e = 0; known = 0
+        for (r = 1; r <= runs; ++r) if (push_error[r, w] != "nan") { e += (push_error[r, w] / kT[r]) ^ 2; ++known }
+        if (known < runs) { printf "| %d | %.3g | not known in %d of %d | |\n", w, sqrt(scatter(4, w)), runs - known, runs; continue }
+        printf "| %d | %.3g | %.3g | %.2f |\n", w, sqrt(scatter(4, w)), sqrt(e / known), sqrt(scatter(4, w) / (e / known))
+      }
+    }
+    # The variance over the seeds of figure f averaged over the first w time units.
+    function scatter(f, w,   r, i, m, v, a_w) {
+      for (r = 1; r <= runs; ++r) { a_w[r] = 0; for (i = 1; i <= w; ++i) a_w[r] += x[f, r, i] / w; m += a_w[r] / runs }
+      for (r = 1; r <= runs; ++r) v += (a_w[r] - m) ^ 2 / (runs - 1)
+      return v
     }
     function acf(f, lag,   r, i, s, m) {
       for (r = 1; r <= runs; ++r) for (i = 1; i + lag <= n; ++i) { s += (x[f, r, i] - mean[f]) * (x[f, r, i + lag] - mean[f]); ++m }

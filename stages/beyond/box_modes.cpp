@@ -63,19 +63,6 @@ namespace {
 constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 constexpr double pi = std::numbers::pi;
 
-// A wave along one side of length `length`: the integral of cos(m pi u / L)
-// over from <= u <= to, and the norm of the wave, integral over 0 ... L of
-// its square.
-struct Side {
-  double projection = 0;
-  double norm = 0;
-};
-Side side_wave(int m, double length, double from, double to) {
-  if (m == 0) return {to - from, length};
-  const double k = m * pi / length;
-  return {(std::sin(k * to) - std::sin(k * from)) / k, length / 2};
-}
-
 // exp(z) - 1 for complex z = x + i y without losing the small ones: the
 // real part expm1(x) cos y - 2 sin^2(y / 2), the imaginary exp(x) sin y.
 std::complex<double> complex_expm1(std::complex<double> z) {
@@ -85,6 +72,12 @@ std::complex<double> complex_expm1(std::complex<double> z) {
 }
 
 }  // namespace
+
+WaveSide side_wave(int m, double length, double from, double to) {
+  if (m == 0) return {to - from, length};
+  const double k = m * pi / length;
+  return {(std::sin(k * to) - std::sin(k * from)) / k, length / 2};
+}
 
 // [anchor: averaged-decay]
 double averaged_decay(double tau, double duration) {
@@ -128,12 +121,12 @@ InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, dou
   const int m_max = static_cast<int>(k_max * side1 / pi);
   const int q_max = static_cast<int>(k_max * side2 / pi);
   for (int m = 0; m <= m_max; ++m) {
-    const Side along_x = side_wave(m, side1, u0, u1);
+    const WaveSide along_x = side_wave(m, side1, u0, u1);
     for (int q = 0; q <= q_max; ++q) {
       if (m == 0 && q == 0) continue;  // the whole gas: fixed
       const double k2 = std::pow(m * pi / side1, 2) + std::pow(q * pi / side2, 2);
       if (k2 > k_max * k_max) break;
-      const Side along_y = side_wave(q, side2, v0, v1);
+      const WaveSide along_y = side_wave(q, side2, v0, v1);
       const double weight = std::pow(along_x.projection * along_y.projection, 2) /
                             (along_x.norm * along_y.norm);  // P^2 / |phi|^2
       // Find how much of each part the average over W keeps.

@@ -75,6 +75,15 @@ InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, dou
 double corrected_by_batches(double theory_whole, double theory_batch,
                             double theory_batches, double batches, double batch_error);
 
+// A standing wave along one side of the centres' box, 0 <= u <= length:
+// the integral of cos(m pi u / length) over from <= u <= to, and the
+// wave's norm, the integral of its square over the whole side.
+struct WaveSide {
+  double projection = 0;
+  double norm = 0;
+};
+WaveSide side_wave(int m, double length, double from, double to);
+
 // The variance of the time average over W of a correlation exp(-t / tau), in
 // units of its value at t = 0: (2 / W^2) integral_0^W (W - t) exp(-t / tau) dt.
 double averaged_decay(double tau, double duration);

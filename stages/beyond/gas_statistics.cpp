@@ -14,6 +14,7 @@
 #include "beyond/hard_disc_fluid.hpp"
 #include "beyond/kinetic_theory.hpp"
 #include "beyond/speed_relaxation.hpp"
+#include "beyond/wall_push.hpp"
 
 namespace gas {
 namespace {
@@ -505,13 +506,16 @@ void take_theory_error(Average& average, double error) {
 // eta_int (Z - Z_ref(eta_int) forgets within a few collisions a ball): its
 // error is dZ/deta times eta_int's, beside that difference's own. Once the
 // batches are long enough, or if the test sees them correlated, the
-// blocking rule speaks, and the sums over the waves are not needed.
+// blocking rule speaks, and the sums over the waves are not needed. The
+// push on the walls' middles takes the theory alone (beyond/wall_push.hpp):
+// its short batches see the noise of single bounces, which the sound they
+// send cancels over a few crossings of the table.
 void GasStatistics::add_box_theory(MeasuredFigures& m) const {
   auto short_batches = [](const Average& a) {
     return a.status == ErrorStatus::short_batches;
   };
   if (!short_batches(m.interior_area_fraction) && !short_batches(m.interior_kT) &&
-      !short_batches(m.bulk_z))
+      !short_batches(m.bulk_z) && !short_batches(m.wall_middle_pressure))
     return;
   const double eta = m.interior_area_fraction.value;
   const EnskogTransport e = enskog_transport(eta, radius_, kT_);
@@ -542,6 +546,11 @@ void GasStatistics::add_box_theory(MeasuredFigures& m) const {
   const double slope = hard_disc_fluid_compressibility_slope(eta);
   take_theory_error(m.bulk_z, std::hypot(slope * m.interior_area_fraction.error,
                                          m.bulk_z_minus_theory.error));
+  const Viscosities viscosities{e.shear_viscosity, e.bulk_viscosity};
+  take_theory_error(m.wall_middle_pressure,
+                    middles_push_wander(fluid, viscosities, radius_, width_ + 2 * radius_,
+                                        height_ + 2 * radius_,
+                                        {interior_.y_min, interior_.y_max}, m.duration));
 }
 // [/anchor: box-theory-errors]
 

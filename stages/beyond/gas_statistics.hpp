@@ -54,7 +54,9 @@ struct Average {
   double batches = 0;             // and how many there are
   // The error is a theory's, not the batches' (still too short): the box's
   // heat and sound for the interior's eta, kT and Z (beyond/box_modes.hpp),
-  // kinetic theory's for the mean speed (beyond/speed_relaxation.hpp).
+  // the fluid's friction and the box's sound for the push on the walls'
+  // middles (beyond/wall_push.hpp), kinetic theory's for the mean speed
+  // (beyond/speed_relaxation.hpp).
   bool from_theory = false;
 };
 
@@ -226,8 +228,9 @@ class GasStatistics final : public CollisionObserver {
   static Average& average_of(MeasuredFigures& m, Quantity q);
 
   void start_averages(const Gas& gas);
-  // The interior's eta and kT, and Z, while their batches are short: their
-  // errors from the box's heat and sound over the time averaged (lesson 14).
+  // The interior's eta and kT, Z and the push on the walls' middles, while
+  // their batches are short: their errors from the box's heat and sound
+  // and the fluid's friction over the time averaged (lesson 14).
   void add_box_theory(MeasuredFigures& m) const;
   // The mean speed's, while its batches are short: kinetic theory's.
   void add_speeds_theory(MeasuredFigures& m) const;
