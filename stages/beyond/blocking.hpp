@@ -11,7 +11,9 @@
 // exist, so a sample costs O(1) amortised time and the whole analysis
 // O(log n) memory. From the levels it gives the standard error of the mean by
 // the rule below, and says "not known" (NaN) until the rule can be applied.
-// Article: none; the article averages nothing. Everything here is beyond it.
+// Article: none (the article's character screen and its figures:
+// beyond/gas_statistics.hpp). That the article takes no time averages and
+// gives them no errors is our reading. Everything here is beyond it.
 // Lesson: lessons/14-error-bars.md
 //
 // Why blocks: for a correlated series the naive error sqrt(s^2 / n) is wrong

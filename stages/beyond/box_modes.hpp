@@ -16,9 +16,9 @@
 // radii, which heat takes some 40 to 80 time units to smooth. No run can
 // see that in its own first few hundred time units (lesson 14); the theory
 // can.
-// Article: none. The article ("Gas on the display", 1989) has its third
-// screen print some properties of the gas, the mean speed for example; it
-// takes no time averages and gives them no errors (our reading).
+// Article: none (the article's character screen and its figures:
+// beyond/gas_statistics.hpp). That the article takes no time averages and
+// gives them no errors is our reading.
 // Lesson: lessons/14-error-bars.md
 //
 // Assumptions: unit mass and k = 1; a fluid in equilibrium in a rectangular

@@ -21,9 +21,9 @@
 // Everything is derived in speed_relaxation.cpp; tests/test_speed_relaxation.cpp
 // checks the closed forms by quadrature and the matrix elements by Monte
 // Carlo over colliding pairs.
-// Article: none. The article ("Gas on the display", 1989) has its third
-// screen print some properties of the gas, the mean speed for example; it
-// takes no time averages and gives them no errors (our reading).
+// Article: none (the article's character screen and its figures:
+// beyond/gas_statistics.hpp). That the article takes no time averages and
+// gives them no errors is our reading.
 // Everything here is beyond it.
 // Lesson: lessons/14-error-bars.md
 //

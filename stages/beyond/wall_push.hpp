@@ -14,9 +14,9 @@
 // middles moved slowly inward, a flow that squeezes the whole gas (bulk
 // viscosity) and shears it near the middles' ends (shear viscosity). On top
 // of that the box's sound waves ring in the average for a few crossings.
-// Article: none. The article ("Gas on the display", 1989) has its third
-// screen print some properties of the gas; it takes no time averages and
-// gives them no errors (our reading).
+// Article: none (the article's character screen and its figures:
+// beyond/gas_statistics.hpp). That the article takes no time averages and
+// gives them no errors is our reading.
 // Lesson: lessons/14-error-bars.md
 //
 // Assumptions: unit mass and k = 1; linear hydrodynamics with walls that
