@@ -143,6 +143,63 @@ TEST_CASE("box modes: two waves written out by hand") {
 }
 
 TEST_CASE(
+    "box modes: heat pulls the interior's density and warmth apart, sound together") {
+  // The table of the test above, one wave (2, 0): its heat part moves the
+  // count and the energy exactly opposite ways, its sound part the same way,
+  // so Corr = sqrt(gamma - 1) (sound - heat) / sqrt(((gamma - 1) heat +
+  // sound) (heat + (gamma - 1) sound)), written out here (agreement to
+  // rounding, 1e-12).
+  const gas::BoxHydrodynamics f = test_fluid();
+  const double a = 1, width = 102, height = 32;
+  const gas::Region interior{21, 81, 9, 24};
+  const double k = 2 * pi / 100, g = f.heat_capacity_ratio;
+  for (const double w : {3.0, 30.0, 270.0}) {
+    const double heat = gas::averaged_decay(1 / (f.thermal_diffusivity * k * k), w);
+    const double sound =
+        gas::averaged_ringing(f.sound_attenuation * k * k, f.sound_speed * k, w);
+    const double expected =
+        std::sqrt(g - 1) * (sound - heat) /
+        std::sqrt(((g - 1) * heat + sound) * (heat + (g - 1) * sound));
+    CHECK(gas::interior_wander(f, a, width, height, interior, w, 0.07).correlation ==
+          doctest::Approx(expected).epsilon(1e-12));
+  }
+  // Many waves. A moment holds both parts whole: no correlation (each
+  // ball's energy is its own, whatever the count; left over O(W k^2 D_T),
+  // 1e-6 here). A long run keeps mostly the heat, which forgets slowest:
+  // nearly -1 (the sound's share of a wave's integral is of order D_T Gamma
+  // k^2 / c^2, at most 0.2 up to k = 0.07 / a here, less for the long waves
+  // that carry the sum; -0.9 holds with room and fails for a wrong sign).
+  const gas::Region middle{6, 16, 5, 12};
+  CHECK(std::abs(gas::interior_wander(f, 1, 22, 17, middle, 1e-7, 60).correlation) <
+        1e-4);
+  const gas::InteriorWander long_run =
+      gas::interior_wander(f, a, width, height, interior, 1e6, 0.07);
+  CHECK(long_run.correlation < -0.9);
+  CHECK(long_run.correlation >= -1);
+}
+
+TEST_CASE("box modes: a figure that follows the interior's density and warmth") {
+  // d ln f = p d ln eta_int + q d ln kT_int: the relative errors add with
+  // their correlation, (p e_eta / eta)^2 + (q e_kT / kT)^2 + 2 rho p q
+  // (e_eta / eta)(e_kT / kT). Plain arithmetic on both sides: 1e-12.
+  gas::InteriorWander w;
+  w.area_fraction = 0.003;  // of eta = 0.3: 1 %
+  w.kT = 0.01;              // of kT = 0.5: 2 %
+  w.correlation = -0.6;
+  CHECK(gas::following_wander(w, 0.3, 0.5, 1.7, 0) ==
+        doctest::Approx(0.017).epsilon(1e-12));
+  CHECK(gas::following_wander(w, 0.3, 0.5, 0, 0.5) ==
+        doctest::Approx(0.01).epsilon(1e-12));
+  const double both = std::sqrt(0.017 * 0.017 + 0.01 * 0.01 - 2 * 0.6 * 0.017 * 0.01);
+  CHECK(gas::following_wander(w, 0.3, 0.5, 1.7, 0.5) ==
+        doctest::Approx(both).epsilon(1e-12));
+  // Perfectly anticorrelated and equal shares cancel (to rounding, never
+  // below zero).
+  w.correlation = -1;
+  CHECK(gas::following_wander(w, 0.3, 0.5, 1, 0.5) < 1e-9);
+}
+
+TEST_CASE(
     "box modes: nothing to say without an interior, a duration, or sound and heat") {
   const gas::BoxHydrodynamics f = test_fluid();
   CHECK(std::isnan(gas::interior_wander(f, 1, 22, 17, gas::Region{}, 100).area_fraction));

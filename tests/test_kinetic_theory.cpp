@@ -512,6 +512,27 @@ TEST_SUITE("kinetic-theory") {
     CHECK(m.bulk_z.error ==
           doctest::Approx(std::hypot(slope * eta_error, m.bulk_z_minus_theory.error))
               .epsilon(1e-12));
+    // The collision rate and the free path follow eta_int and kT_int:
+    // d ln rate = (1 + eta g'/g) d ln eta_int + d ln kT_int / 2, the free
+    // path -(1 + eta g'/g) d ln eta_int; each over its own batches.
+    const double eta_power = 1 + eta * gas::hard_disc_fluid_contact_value_slope(eta) /
+                                     gas::hard_disc_fluid_contact_value(eta);
+    auto following = [&](const gas::Average& figure, double of_eta, double of_kT) {
+      auto relative = [&](double duration) {
+        return figure.value *
+               gas::following_wander(wander(duration), eta, kT, of_eta, of_kT);
+      };
+      return gas::corrected_by_batches(relative(m.duration), relative(figure.batch_time),
+                                       relative(figure.batches * figure.batch_time),
+                                       figure.batches, figure.batch_error);
+    };
+    REQUIRE(m.collision_rate.status == gas::ErrorStatus::short_batches);
+    CHECK(m.collision_rate.from_theory);
+    CHECK(m.collision_rate.error ==
+          doctest::Approx(following(m.collision_rate, eta_power, 0.5)).epsilon(1e-12));
+    CHECK(m.mean_free_path.from_theory);
+    CHECK(m.mean_free_path.error ==
+          doctest::Approx(following(m.mean_free_path, -eta_power, 0)).epsilon(1e-12));
     // The mean speed's batches (25 pair collisions per ball) do not fit
     // yet either: its error is kinetic theory's at the table's eta.
     REQUIRE(m.mean_speed.status == gas::ErrorStatus::short_batches);
@@ -552,6 +573,8 @@ TEST_SUITE("kinetic-theory") {
     CHECK_FALSE(late.bulk_z.from_theory);
     CHECK_FALSE(late.mean_speed.from_theory);
     CHECK_FALSE(late.wall_middle_pressure.from_theory);
+    CHECK_FALSE(late.collision_rate.from_theory);
+    CHECK_FALSE(late.mean_free_path.from_theory);
   }
 
   TEST_CASE(

@@ -50,8 +50,20 @@
 //   Var(kT_int)  = (n A_int)^-2 sum n kT^2 (P^2 / |phi|^2)
 //                  ((1/gamma) heat + (1 - 1/gamma) sound),
 // heat and sound each the time average's factor above for that wave.
+//
+// The two together. <dn X> = <dP^2> kT Z / c^4 - <dq^2> alpha_P / c_p^2 =
+// n kT Z S(0) / gamma (sound - heat) per unit area (kT / c^2 = S(0) /
+// gamma, alpha_P kT = Z S(0)): heat moves the count and the energy
+// opposite ways, sound the same way. For hard discs gamma - 1 = Z^2 S(0)
+// (c_p - c_v = T (dP/dT)_n^2 / (n^2 (dP/dn)_T), with (dP/dT)_n = n Z and
+// (dP/dn)_T = kT / S(0)), so wave by wave heat's correlation is exactly
+// -1 and sound's +1, and with H and A the sums of P^2 / |phi|^2 times heat
+// and times sound,
+//   Corr(eta_int, kT_int) = sqrt(gamma - 1) (A - H)
+//                           / sqrt(((gamma - 1) H + A) (H + (gamma - 1) A)).
 #include "beyond/box_modes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -116,8 +128,7 @@ InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, dou
   // The interior in the centres' box.
   const double u0 = interior.x_min - radius, u1 = interior.x_max - radius;
   const double v0 = interior.y_min - radius, v1 = interior.y_max - radius;
-  const double heat_share = 1 - 1 / fluid.heat_capacity_ratio;  // of the density
-  double count = 0, energy = 0;  // Var(N_int) and Var(X_int) of the averages
+  double heat_sum = 0, sound_sum = 0;  // H and A: the waves' weights times heat, sound
   const int m_max = static_cast<int>(k_max * side1 / pi);
   const int q_max = static_cast<int>(k_max * side2 / pi);
   for (int m = 0; m <= m_max; ++m) {
@@ -133,17 +144,32 @@ InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, dou
       const double heat = averaged_decay(1 / (fluid.thermal_diffusivity * k2), duration);
       const double sound = averaged_ringing(fluid.sound_attenuation * k2,
                                             fluid.sound_speed * std::sqrt(k2), duration);
-      count += weight * ((heat_share * heat) + (1 - heat_share) * sound);
-      energy += weight * ((1 - heat_share) * heat + heat_share * sound);
+      heat_sum += weight * heat;
+      sound_sum += weight * sound;
     }
   }
+  // Var(N_int) and Var(X_int) of the averages, in units of n S(0) and n kT^2.
+  const double g = fluid.heat_capacity_ratio;
+  const double count = ((g - 1) * heat_sum + sound_sum) / g;
+  const double energy = (heat_sum + (g - 1) * sound_sum) / g;
   const double n = fluid.density;
   const double area = interior.area();
   wander.area_fraction =
       pi * radius * radius / area * std::sqrt(n * fluid.structure_factor * count);
   wander.kT = std::sqrt(n * fluid.kT * fluid.kT * energy) / (n * area);
+  wander.correlation =
+      std::sqrt(g - 1) * (sound_sum - heat_sum) / (g * std::sqrt(count * energy));
   return wander;
 }
 // [/anchor: interior-wander]
+
+double following_wander(const InteriorWander& wander, double eta, double kT,
+                        double eta_power, double kT_power) {
+  const double by_eta = eta_power * wander.area_fraction / eta;
+  const double by_kT = kT_power * wander.kT / kT;
+  // (Never below zero: a correlation of -1 and equal shares cancel exactly.)
+  return std::sqrt(std::max(
+      0.0, by_eta * by_eta + by_kT * by_kT + 2 * wander.correlation * by_eta * by_kT));
+}
 
 }  // namespace gas

@@ -3,7 +3,9 @@
 //
 // What this file does: predicts the standard error of two time averages of
 // the statistics screen, the interior's area fraction eta_int and its own
-// kT, over a run of duration W, without looking at the run. The gas's
+// kT, over a run of duration W, without looking at the run, and their
+// correlation, from which follow the errors of figures that move with both
+// (the interior's collision rate and free path). The gas's
 // density and energy, written as the box's standing waves cos(m pi x / L1)
 // cos(q pi y / L2) (the walls turn balls back like mirrors: no flow and no
 // heat through them), fluctuate in equilibrium by amounts thermodynamics
@@ -51,7 +53,17 @@ struct BoxHydrodynamics {
 struct InteriorWander {
   double area_fraction = std::numeric_limits<double>::quiet_NaN();  // of eta_int
   double kT = std::numeric_limits<double>::quiet_NaN();             // of kT_int
+  // The correlation of those two averages, -1 ... 1: heat makes the
+  // interior thin where it warms it (-1 wave by wave), sound dense (+1).
+  double correlation = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The relative standard error of a figure f that follows the interior's
+// density and warmth as d ln f = eta_power d ln eta_int + kT_power d ln
+// kT_int (the collision rate: 1 + eta g'/g and 1/2), from their errors and
+// correlation in `wander` at the interior's eta and kT.
+double following_wander(const InteriorWander& wander, double eta, double kT,
+                        double eta_power, double kT_power);
 
 // The standard errors of eta_int and kT_int averaged over `duration` time
 // units, for balls of `radius` on a table `width` x `height` (A1, A2; the

@@ -411,7 +411,6 @@ bool GasStatistics::follows_table_heat(Quantity q) {
     case pressure_minus_theory_q:
     case mean_free_path_minus_theory_q:
     case collision_rate_box_q:
-    case collision_rate_q:
     case quantity_count:
       return false;
     default:
@@ -507,6 +506,9 @@ void take_theory_error(Average& average, double error) {
 // error is dZ/deta times eta_int's, beside that difference's own. Once the
 // batches are long enough, or if the test sees them correlated, the
 // blocking rule speaks, and the sums over the waves are not needed. The
+// interior's collision rate and free path follow eta_int and kT_int
+// (Enskog's rate goes as eta g(2a+) sqrt(kT), the free path as 1 / (eta
+// g)): their slow errors come from those two's and their correlation. The
 // push on the walls' middles takes the theory alone (beyond/wall_push.hpp):
 // its short batches see the noise of single bounces, which the sound they
 // send cancels over a few crossings of the table.
@@ -515,7 +517,9 @@ void GasStatistics::add_box_theory(MeasuredFigures& m) const {
     return a.status == ErrorStatus::short_batches;
   };
   const bool interior_short = short_batches(m.interior_area_fraction) ||
-                              short_batches(m.interior_kT) || short_batches(m.bulk_z);
+                              short_batches(m.interior_kT) || short_batches(m.bulk_z) ||
+                              short_batches(m.collision_rate) ||
+                              short_batches(m.mean_free_path);
   const bool push_short = short_batches(m.wall_middle_pressure);
   if (!interior_short && !push_short) return;
   const double eta = m.interior_area_fraction.value;
@@ -548,6 +552,29 @@ void GasStatistics::add_box_theory(MeasuredFigures& m) const {
     const double slope = hard_disc_fluid_compressibility_slope(eta);
     take_theory_error(m.bulk_z, std::hypot(slope * m.interior_area_fraction.error,
                                            m.bulk_z_minus_theory.error));
+    // The rate and the free path, each over its own batches: d ln rate =
+    // (1 + eta g' / g) d ln eta_int + d ln kT_int / 2; the free path, the
+    // interior's mean speed over the rate, loses the kT.
+    const double eta_power = 1 + eta * hard_disc_fluid_contact_value_slope(eta) /
+                                     hard_disc_fluid_contact_value(eta);
+    auto follow = [&](Average& figure, double power_of_eta, double power_of_kT) {
+      // (The figures are sampled together: their batches are usually
+      // eta_int's, whose sums are reused.)
+      const bool same =
+          figure.batch_time == eta_int.batch_time && figure.batches == eta_int.batches;
+      const InteriorWander one_here = same ? one : wander(figure.batch_time);
+      const InteriorWander all_here =
+          same ? all : wander(figure.batches * figure.batch_time);
+      auto relative = [&](const InteriorWander& w) {
+        return std::abs(figure.value) *
+               following_wander(w, eta, kT_, power_of_eta, power_of_kT);
+      };
+      take_theory_error(figure, corrected_by_batches(relative(whole), relative(one_here),
+                                                     relative(all_here), figure.batches,
+                                                     figure.batch_error));
+    };
+    follow(m.collision_rate, eta_power, 0.5);
+    follow(m.mean_free_path, -eta_power, 0);
   }
   if (push_short) {
     const Viscosities viscosities{e.shear_viscosity, e.bulk_viscosity};

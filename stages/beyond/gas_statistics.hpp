@@ -53,7 +53,8 @@ struct Average {
   double batch_time = not_known;  // the length of those batches, model time
   double batches = 0;             // and how many there are
   // The error is a theory's, not the batches' (still too short): the box's
-  // heat and sound for the interior's eta, kT and Z (beyond/box_modes.hpp),
+  // heat and sound for the interior's eta, kT, Z, collision rate and mean
+  // free path (beyond/box_modes.hpp),
   // the fluid's friction and the box's sound for the push on the walls'
   // middles (beyond/wall_push.hpp), kinetic theory's for the mean speed
   // (beyond/speed_relaxation.hpp).
@@ -216,10 +217,11 @@ class GasStatistics final : public CollisionObserver {
   // Does the quantity wander with the table's heat (measured: its blocking
   // curve still rises past the sound's crossing time), so that its error
   // waits for batches as long as table_heat_time? The differences from
-  // theory, taken sample by sample, do not; nor do the collision rates, nor
-  // the mean speed (the total energy is fixed: only the shape of the speeds'
-  // distribution moves it, and that forgets itself within a few pair
-  // collisions per ball; lesson 14).
+  // theory, taken sample by sample, do not; nor does the whole box's
+  // collision rate (the energy and the count are fixed), nor the mean speed
+  // (only the shape of the speeds' distribution moves it, and that forgets
+  // itself within a few pair collisions per ball; lesson 14). The
+  // interior's rate does: it follows the interior's density and kT.
   static bool follows_table_heat(Quantity q);
   // Does the quantity follow the shape of the speeds' distribution (the mean
   // speed), so that its error waits for batches of
