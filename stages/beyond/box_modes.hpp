@@ -53,8 +53,8 @@ struct BoxHydrodynamics {
 struct InteriorWander {
   double area_fraction = std::numeric_limits<double>::quiet_NaN();  // of eta_int
   double kT = std::numeric_limits<double>::quiet_NaN();             // of kT_int
-  // The correlation of those two averages, -1 ... 1: heat makes the
-  // interior thin where it warms it (-1 wave by wave), sound dense (+1).
+  // The correlation of those two averages, -1 ... 1: where heat warms the
+  // gas it thins it (-1 wave by wave), where sound warms it it packs it (+1).
   double correlation = std::numeric_limits<double>::quiet_NaN();
 };
 
