@@ -457,11 +457,12 @@ TEST_SUITE("kinetic-theory") {
       "the interior's slow figures: errors from the box's heat and sound, then from "
       "the batches") {
     // data/large-1000.scene after 263 time units of averages: the batches are
-    // far shorter than the table's heat time, so eta_int, kT_int and Z take
-    // their errors from the box's waves (beyond/box_modes.hpp) over the time
-    // averaged, at the interior's measured eta and the gas's kT, and Z's
-    // adds dZ/deta times eta_int's to its difference from the reference's
-    // own; the short part of each is what the run's batches say
+    // far shorter than the table's heat time, so eta_int, kT_int, Z, the
+    // collision rate and the free path take their errors from the box's
+    // waves (beyond/box_modes.hpp) over the time averaged, at the interior's
+    // measured eta and the gas's kT, and Z's adds dZ/deta times eta_int's to
+    // its difference from the reference's own; the short part of each is
+    // what the run's batches say
     // (corrected_by_batches). Computed again here from those inputs, the
     // same sums give the same numbers to rounding (1e-12).
     ObservedRun run(gas::read_scene_file(GAS_SOURCE_DIR "/data/large-1000.scene"));
