@@ -557,21 +557,16 @@ void GasStatistics::add_box_theory(MeasuredFigures& m) const {
     // interior's mean speed over the rate, loses the kT.
     const double eta_power = 1 + eta * hard_disc_fluid_contact_value_slope(eta) /
                                      hard_disc_fluid_contact_value(eta);
+    // Both are sampled with eta_int and wait for the same heat-time batches,
+    // so eta_int's batches are theirs: the sums above serve.
     auto follow = [&](Average& figure, double power_of_eta, double power_of_kT) {
-      // (The figures are sampled together: their batches are usually
-      // eta_int's, whose sums are reused.)
-      const bool same =
-          figure.batch_time == eta_int.batch_time && figure.batches == eta_int.batches;
-      const InteriorWander one_here = same ? one : wander(figure.batch_time);
-      const InteriorWander all_here =
-          same ? all : wander(figure.batches * figure.batch_time);
       auto relative = [&](const InteriorWander& w) {
         return std::abs(figure.value) *
                following_wander(w, eta, kT_, power_of_eta, power_of_kT);
       };
-      take_theory_error(figure, corrected_by_batches(relative(whole), relative(one_here),
-                                                     relative(all_here), figure.batches,
-                                                     figure.batch_error));
+      take_theory_error(
+          figure, corrected_by_batches(relative(whole), relative(one), relative(all),
+                                       figure.batches, figure.batch_error));
     };
     follow(m.collision_rate, eta_power, 0.5);
     follow(m.mean_free_path, -eta_power, 0);
