@@ -142,10 +142,6 @@ TEST_SUITE("kinetic-theory") {
     CHECK(ar1_blocking(0, 31, 3).chosen_level() == 0);
     CHECK(ar1_blocking(0, 32, 3).chosen_level() == 1);
     CHECK(ar1_blocking(0, 1000, 3).status() == gas::ErrorStatus::known);
-    // Fewer batches when asked for: 8 to 15.
-    gas::BlockingAnalysis eight(8);
-    for (int i = 0; i < 8; ++i) eight.add(i % 3);
-    CHECK(eight.chosen_level() == 0);
     // A straight ramp: its batches are as correlated as can be. Jonsson's
     // test on the batches' level and the two below sees it: 1000 samples,
     // batches of 32 (31 of them), M over 125, 62 and 31 blocks.

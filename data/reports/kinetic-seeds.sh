@@ -34,8 +34,9 @@
 #   rates and the exponent 1/2, kT_interior and the pressure 1), the spread
 #   of (x_s - mean) / e_s over the seeds whose error is known (the root mean
 #   square, over n - 1; about 1 for honest errors: 1.04 to 1.07 for
-#   Student's t of 16 to 31 batches, within some 0.15 over 40 seeds), and
-#   how many seeds show no error yet.
+#   Student's t of 16 to 31 batches, about 1.17 for the exponent's six
+#   overlapping ones, within some 0.15 over 40 seeds), and how many seeds
+#   show no error yet.
 # closed: the closed box's 1/N (kinetic_theory.hpp, fixed_count_shift; lesson 13):
 #   lattice gases of N = 256 balls (CLOSED_SEEDS_256, default 301 to 340)
 #   and N = 1024 (CLOSED_SEEDS_1024, default 401 to 424) at eta = 0.1, 0.2,
@@ -319,7 +320,9 @@ echo "until then the interior's η, kT, Z, collision rate and free path take"
 echo "theirs from the box's heat and sound (stages/beyond/box_modes.hpp), the"
 echo "mean speed from kinetic theory (stages/beyond/speed_relaxation.hpp), the"
 echo "push on the walls' middles from the fluid's friction on them and the box's"
-echo "sound (stages/beyond/wall_push.hpp)."
+echo "sound (stages/beyond/wall_push.hpp). The Lyapunov exponent's error is"
+echo "overlapping batches a sixth of the run, never shorter than 16 samples"
+echo "(stages/beyond/overlapping_batches.hpp; its samples are anticorrelated)."
 echo
 if has theory; then
   echo "## Each figure against its theory"

@@ -105,7 +105,7 @@ int BlockingAnalysis::batch_level() const {
   // The highest level with at least fewest_blocks blocks (levels only get
   // fewer blocks going up).
   std::size_t top = 0;
-  while (top < levels_.size() && levels_[top].blocks >= fewest_blocks_) ++top;
+  while (top < levels_.size() && levels_[top].blocks >= fewest_blocks) ++top;
   return static_cast<int>(top) - 1;
 }
 
@@ -116,7 +116,7 @@ std::size_t BlockingAnalysis::batches() const {
 
 // [anchor: error-rule]
 ErrorStatus BlockingAnalysis::status() const {
-  // 1. Batch means: fewest_blocks_ (16) to twice as many less one batches.
+  // 1. Batch means: fewest_blocks (16) to twice as many less one batches.
   const int batches = batch_level();
   if (batches < 0) return ErrorStatus::few_samples;
   const auto k = static_cast<std::size_t>(batches);

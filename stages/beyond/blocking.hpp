@@ -112,14 +112,10 @@ struct BlockingLevel {
 
 class BlockingAnalysis {
  public:
-  // The fewest batches the error is taken from (see the rule above): 16
-  // unless a caller's samples ask for fewer, longer batches (the Lyapunov
-  // exponent's, whose neighbours are anticorrelated: beyond/lyapunov.hpp).
-  static constexpr std::size_t default_fewest_blocks = 16;
-  BlockingAnalysis() = default;
-  explicit BlockingAnalysis(std::size_t fewest_blocks)
-      : fewest_blocks_(fewest_blocks < 2 ? 2 : fewest_blocks) {}
-  std::size_t fewest_blocks() const { return fewest_blocks_; }
+  // The fewest batches the error is taken from (see the rule above). (The
+  // Lyapunov exponent, whose samples are anticorrelated, takes longer,
+  // overlapping batches instead: beyond/overlapping_batches.hpp.)
+  static constexpr std::size_t fewest_blocks = 16;
   // The levels Jonsson's test looks at: the batches' own and this many below.
   static constexpr std::size_t test_levels_below = 2;
 
@@ -188,7 +184,6 @@ class BlockingAnalysis {
 
   std::size_t count_ = 0;
   double origin_ = 0;  // the first sample
-  std::size_t fewest_blocks_ = default_fewest_blocks;
   std::size_t shortest_batch_ = 1;
   std::vector<Level> levels_;
 };

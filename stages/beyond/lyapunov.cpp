@@ -8,7 +8,6 @@ namespace gas {
 
 LyapunovExponent::LyapunovExponent(const Gas& gas, std::uint64_t seed)
     : seed_(seed), tangent_(gas, seed), balls_(gas.balls.size()) {
-  blocking_.set_shortest_batch(lyapunov_shortest_batch);
   start_warm_up(gas.time);
 }
 
@@ -17,7 +16,7 @@ void LyapunovExponent::start_warm_up(double time) {
   warm_up_until_ =
       collisions_ + warm_up_collisions_per_ball * static_cast<long long>(balls_);
   interval_ = 0;
-  blocking_.clear();
+  batches_.clear();
   clear_at_next_ = false;
 }
 
@@ -27,12 +26,12 @@ void LyapunovExponent::sample_at(double time) {
   const double norm = tangent_.norm_at(time);
   tangent_.scale_at(time, 1 / norm);
   if (clear_at_next_) {  // the key A: averages from here on
-    blocking_.clear();
+    batches_.clear();
     clear_at_next_ = false;
   }
   // The collisions of the stretch averaged: from the T_k that began it.
-  if (blocking_.count() == 0) first_collision_ = last_collision_;
-  blocking_.add(std::log(norm) / interval_);
+  if (batches_.count() == 0) first_collision_ = last_collision_;
+  batches_.add(std::log(norm) / interval_);
   last_collision_ = collisions_;
 }
 
@@ -54,7 +53,7 @@ void LyapunovExponent::before_collision(const Gas& gas, const Collision& collisi
     interval_ = (collision.time - warm_up_start_) / warm_up_collisions_per_ball;
     tangent_.scale_at(collision.time, 1 / tangent_.norm_at(collision.time));
     next_ = collision.time + interval_;
-    blocking_.clear();
+    batches_.clear();
     first_collision_ = last_collision_ = collisions_;
   }
 }
@@ -73,9 +72,16 @@ void LyapunovExponent::restart() {
 LyapunovFigures LyapunovExponent::measured(const Gas& /*gas*/) const {
   LyapunovFigures f;
   f.warming_up = interval_ == 0;
-  f.samples = static_cast<long long>(blocking_.count());
+  f.samples = static_cast<long long>(batches_.count());
   if (f.samples == 0) return f;
-  f.exponent = average_with_error(blocking_);
+  f.exponent.value = batches_.mean();
+  f.exponent.error = batches_.error();
+  if (std::isnan(f.exponent.error)) {
+    f.exponent.status = ErrorStatus::short_batches;
+    f.exponent.why_no_error = "not yet";
+  } else {
+    f.exponent.status = ErrorStatus::known;
+  }
   const double duration = static_cast<double>(f.samples) * interval_;
   f.collision_rate = static_cast<double>(last_collision_ - first_collision_) / duration;
   if (!(f.collision_rate > 0)) return f;

@@ -6,9 +6,9 @@
 // hook, and measures how fast it grows: G. Benettin's method — at fixed
 // moments T_k = T_0 + k dT its Euclidean norm (all 4N components) is
 // measured and brought back to 1, and ln(norm) / dT is one sample of the
-// exponent lambda. The samples' mean is lambda, per unit model time; their
-// error comes from a blocking analysis (beyond/blocking.hpp), as for the
-// other averages of the statistics screen. From lambda follows how many
+// exponent lambda. The samples' mean is lambda, per unit model time; its
+// error comes from overlapping batches (beyond/overlapping_batches.hpp),
+// long ones, as the samples are anticorrelated (below). From lambda follows how many
 // collisions a ball a number type follows the exact motion: an error of one
 // unit in the last place of the coordinates grows as e^(lambda t) and
 // reaches a distance d after t = ln(d / eps) / lambda.
@@ -23,8 +23,8 @@
 
 #include <cstdint>
 
-#include "beyond/blocking.hpp"
 #include "beyond/gas_statistics.hpp"
+#include "beyond/overlapping_batches.hpp"
 #include "beyond/tangent_dynamics.hpp"
 #include "stage1_data.hpp"
 #include "stage4_first_collision.hpp"
@@ -50,9 +50,10 @@ struct LyapunovFigures {
 // collisions). Not the statistics' warm-up (warm_up_collisions_a_ball), which
 // waits for the density to settle.
 inline constexpr long long warm_up_collisions_per_ball = 5;
-// The fewest batches the exponent's error is taken from, and the fewest
-// samples in a batch (beyond/blocking.hpp, rules 1 and 2).
-inline constexpr std::size_t lyapunov_fewest_batches = 8;
+// The exponent's error: overlapping batches (beyond/overlapping_batches.hpp),
+// each a sixth of the samples and never fewer than 16 of them, so no error
+// before 96 samples (about 190 time units on data/large-1000.scene).
+inline constexpr std::size_t lyapunov_batches_per_run = 6;
 inline constexpr std::size_t lyapunov_shortest_batch = 16;
 
 class LyapunovExponent final : public CollisionObserver {
@@ -93,14 +94,14 @@ class LyapunovExponent final : public CollisionObserver {
   bool clear_at_next_ = false;     // A: the samples so far dropped at the next T_k
   long long first_collision_ = 0;  // collisions_ at the first averaged T_k
   long long last_collision_ = 0;   // collisions_ at the last T_k
-  // The samples ln(norm) / dT, in 8 to 15 batches of at least 16 samples:
-  // neighbours are anticorrelated (a stretch that grew the change much
-  // leaves it less turned to the fastest direction, and the next grows it
-  // less), over some 30 samples, so shorter batches, or more of them, make
-  // the error too large (measured, 40 gases like data/large-1000.scene: the
-  // spread of (lambda - mean) / error 0.72 at T = 400 with 16 to 31
-  // batches, 0.74 at T = 150 with 8 to 15 batches of 8 samples).
-  BlockingAnalysis blocking_{lyapunov_fewest_batches};
+  // The samples ln(norm) / dT. Neighbours are anticorrelated: a stretch
+  // that grew the change much leaves it less turned to the fastest
+  // direction, and the next ones grow it less, over some 20 samples (40
+  // time units on data/large-1000.scene). Separate batches of 16 samples
+  // therefore make the error too large; batches a sixth of the run, taken
+  // at every start, do not (lessons/15-chaos.md, "Is the error honest?",
+  // with the measurements over 400 gases).
+  OverlappingBatchMeans batches_{lyapunov_batches_per_run, lyapunov_shortest_batch};
 };
 
 // How many collisions a ball the motion is followed before an error `epsilon`
