@@ -67,6 +67,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <vector>
 
 namespace gas {
 
@@ -77,10 +78,15 @@ constexpr double pi = std::numbers::pi;
 
 // exp(z) - 1 for complex z = x + i y without losing the small ones: the
 // real part expm1(x) cos y - 2 sin^2(y / 2), the imaginary exp(x) sin y.
+// One sine and cosine, of y / 2: cos y = 1 - 2 sin^2(y / 2), sin y = 2
+// sin(y / 2) cos(y / 2) (the sums over the waves call this some 10^4 times
+// for every row of the statistics).
 std::complex<double> complex_expm1(std::complex<double> z) {
   const double x = z.real(), y = z.imag();
-  const double half = std::sin(y / 2);
-  return {std::expm1(x) * std::cos(y) - 2 * half * half, std::exp(x) * std::sin(y)};
+  const double sine = std::sin(y / 2), cosine = std::cos(y / 2);
+  const double versine = 2 * sine * sine;  // 1 - cos y
+  const double e = std::expm1(x);
+  return {e * (1 - versine) - versine, (1 + e) * 2 * sine * cosine};
 }
 
 }  // namespace
@@ -101,7 +107,12 @@ double averaged_decay(double tau, double duration) {
 double averaged_ringing(double alpha, double omega, double duration) {
   const std::complex<double> s(alpha, -omega);
   const double w = duration;
-  const std::complex<double> integral = w / s + complex_expm1(-s * w) / (s * s);
+  // 1 / s as conj(s) / |s|^2: a division by a real number (the library's
+  // complex division guards against overflows that cannot happen here, at
+  // some cost).
+  const std::complex<double> inverse = std::conj(s) / std::norm(s);
+  const std::complex<double> integral =
+      w * inverse + complex_expm1(-s * w) * inverse * inverse;
   return 2 * integral.real() / (w * w);
 }
 // [/anchor: averaged-decay]
@@ -131,13 +142,16 @@ InteriorWander interior_wander(const BoxHydrodynamics& fluid, double radius, dou
   double heat_sum = 0, sound_sum = 0;  // H and A: the waves' weights times heat, sound
   const int m_max = static_cast<int>(k_max * side1 / pi);
   const int q_max = static_cast<int>(k_max * side2 / pi);
+  // The interior's side along y, for each q once (not once per wave).
+  std::vector<WaveSide> along_ys;
+  for (int q = 0; q <= q_max; ++q) along_ys.push_back(side_wave(q, side2, v0, v1));
   for (int m = 0; m <= m_max; ++m) {
     const WaveSide along_x = side_wave(m, side1, u0, u1);
     for (int q = 0; q <= q_max; ++q) {
       if (m == 0 && q == 0) continue;  // the whole gas: fixed
       const double k2 = std::pow(m * pi / side1, 2) + std::pow(q * pi / side2, 2);
       if (k2 > k_max * k_max) break;
-      const WaveSide along_y = side_wave(q, side2, v0, v1);
+      const WaveSide& along_y = along_ys[static_cast<std::size_t>(q)];
       const double weight = std::pow(along_x.projection * along_y.projection, 2) /
                             (along_x.norm * along_y.norm);  // P^2 / |phi|^2
       // Find how much of each part the average over W keeps.
