@@ -8,10 +8,10 @@
 // measured and brought back to 1, and ln(norm) / dT is one sample of the
 // exponent lambda. The samples' mean is lambda, per unit model time; its
 // error comes from overlapping batches (beyond/overlapping_batches.hpp),
-// long ones, as the samples are anticorrelated (below). From lambda follows how many
-// collisions a ball a number type follows the exact motion: an error of one
-// unit in the last place of the coordinates grows as e^(lambda t) and
-// reaches a distance d after t = ln(d / eps) / lambda.
+// long ones, as the samples are anticorrelated (below). From lambda follows
+// how many collisions a ball a number type follows the exact motion: an
+// error of one unit in the last place of the coordinates grows as
+// e^(lambda t) and reaches a distance d after t = ln(d / eps) / lambda.
 // Article: none; lesson 9 shows what the exponent predicts, B failing after
 // some collisions. Everything here is beyond the article.
 // Lesson: lessons/15-chaos.md
@@ -52,7 +52,7 @@ struct LyapunovFigures {
 inline constexpr long long warm_up_collisions_per_ball = 5;
 // The exponent's error: overlapping batches (beyond/overlapping_batches.hpp),
 // each a sixth of the samples and never fewer than 16 of them, so no error
-// before 96 samples (about 190 time units on data/large-1000.scene).
+// before 96 samples (T = 221 on data/large-1000.scene).
 inline constexpr std::size_t lyapunov_batches_per_run = 6;
 inline constexpr std::size_t lyapunov_shortest_batch = 16;
 

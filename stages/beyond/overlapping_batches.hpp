@@ -1,6 +1,6 @@
 // Overlapping batch means (beyond the article): the mean of a correlated
 // series and its standard error from every batch of b consecutive samples,
-// not only the b-th ones.
+// overlapping, not only the n / b that do not overlap.
 //
 // What this file does: keeps the samples x_1 ... x_n and, for a batch length
 // b about n / batches_per_run, the batches x_j+1 ... x_j+b for every start
@@ -8,21 +8,22 @@
 // Y the mean of all samples, the standard error of Y is
 //   e^2 = b / ((n - b + 1) (n - b)) * sum over j of (Y_j - Y)^2
 // (M. S. Meketon and B. Schmeiser, "Overlapping batch means: something for
-// nothing?", Proc. 1984 Winter Simulation Conference, 227): for independent
-// samples of variance s^2 its expectation is s^2 / n exactly (the factor
-// makes it so; tests/test_overlapping_batches.cpp checks it), and for a
-// correlated series it tends to the true error as b grows past the
-// correlations. Used for the Lyapunov exponent (beyond/lyapunov.hpp), whose
-// samples are anticorrelated over tens of samples: its batches must be long,
-// a sixth of the run, and non-overlapping batches that long would be six,
-// too few to say their own scatter.
+// nothing?", Proceedings of the 1984 Winter Simulation Conference): for
+// independent samples of variance s^2 its expectation is s^2 / n exactly
+// (the factor makes it so; tests/test_overlapping_batches.cpp checks it),
+// and for a correlated series it tends to the true error as b grows past
+// the correlations. Used for the Lyapunov exponent (beyond/lyapunov.hpp),
+// whose samples are anticorrelated over tens of samples: its batches must
+// be long, a sixth of the run, and non-overlapping batches that long would
+// be six, too few to say their own scatter.
 // Article: none. Everything here is beyond it.
 // Lesson: lessons/15-chaos.md
 //
 // Why overlapping: with the same b, the overlapping batches' e^2 scatters
 // less than that of the n / b separate batches (beyond/blocking.hpp): its
-// variance is about 2/3 of theirs (Meketon and Schmeiser; measured by the
-// test, iid samples, n / b = 6), as if it had half as many batches again.
+// variance is about 2/3 of theirs (Meketon and Schmeiser, for long runs;
+// 0.68 in the test, independent samples, n / b = 6), as if it had half as
+// many batches again.
 // The batch length follows the run: b is n / batches_per_run, renewed when
 // n / batches_per_run has grown by an eighth past it (by one while b < 8).
 // A renewal sums every batch afresh, O(n); between renewals each sample adds
